@@ -1,0 +1,160 @@
+#include "stickmorph/compatibility.h"
+
+#include <algorithm>
+#include <set>
+#include <utility>
+
+namespace stickmorph {
+namespace {
+
+using DirectedEdge = std::pair<int, int>;
+
+// Neighbour vertices of v in counter-clockwise order, rotated so that the
+// smallest index comes first: equal lists mean equal cyclic orders.
+std::vector<int> canonical_neighbours(const StickFigure& figure, const RotationSystem& rs, int v) {
+  std::vector<int> around;
+  for (int d : rs.outgoing_ccw[v]) around.push_back(dart_head(figure, d));
+  if (!around.empty())
+    std::rotate(around.begin(), std::min_element(around.begin(), around.end()), around.end());
+  return around;
+}
+
+std::vector<int> canonical_reversed(std::vector<int> around) {
+  std::reverse(around.begin(), around.end());
+  if (!around.empty())
+    std::rotate(around.begin(), std::min_element(around.begin(), around.end()), around.end());
+  return around;
+}
+
+std::string list_text(const std::vector<int>& items, const char* separator, std::size_t limit = 16) {
+  std::string text;
+  for (std::size_t k = 0; k < items.size() && k < limit; ++k)
+    text += (k ? separator : "") + std::to_string(items[k]);
+  if (items.size() > limit) text += std::string(separator) + "... (" + std::to_string(items.size()) + " in all)";
+  return text;
+}
+
+// The exterior sequence as a set of directed edges (tail, head): comparable
+// across figures whose edge lists differ in order or direction.
+std::set<DirectedEdge> exterior_edges(const StickFigure& figure, const Decomposition& dec) {
+  std::set<DirectedEdge> result;
+  for (int d : dec.sequences[dec.exterior].darts)
+    result.emplace(dart_tail(figure, d), dart_head(figure, d));
+  return result;
+}
+
+// The exterior sequence's vertices, starting from its smallest vertex, for
+// messages.
+std::vector<int> exterior_vertices(const Decomposition& dec) {
+  std::vector<int> vs = dec.sequences[dec.exterior].vertices;
+  if (!vs.empty()) std::rotate(vs.begin(), std::min_element(vs.begin(), vs.end()), vs.end());
+  return vs;
+}
+
+CompatibilityReport incompatible(Incompatibility kind, std::string reason, std::vector<int> vertices) {
+  CompatibilityReport report;
+  report.kind = kind;
+  report.reason = std::move(reason);
+  report.vertices = std::move(vertices);
+  return report;
+}
+
+std::set<DirectedEdge> undirected_set(const StickFigure& figure) {
+  std::set<DirectedEdge> edges;
+  for (const Edge& e : figure.edges) edges.emplace(std::min(e[0], e[1]), std::max(e[0], e[1]));
+  return edges;
+}
+
+}  // namespace
+
+CompatibilityReport check_compatibility(const StickFigure& source, const Decomposition& source_dec,
+                                        const StickFigure& target, const Decomposition& target_dec) {
+  const std::size_t n = source.vertices.size();
+  if (n != target.vertices.size())
+    return incompatible(Incompatibility::VertexCountDiffers,
+                        "the source has " + std::to_string(n) + " vertices and the target " +
+                            std::to_string(target.vertices.size()),
+                        {});
+
+  // Section 2.1 compares figures whose vertices correspond; their edges must
+  // correspond too.
+  const std::set<DirectedEdge> source_edges = undirected_set(source);
+  const std::set<DirectedEdge> target_edges = undirected_set(target);
+  for (const Edge& e : source.edges)
+    if (!target_edges.count({std::min(e[0], e[1]), std::max(e[0], e[1])}))
+      return incompatible(Incompatibility::EdgeSetDiffers,
+                          "edge " + describe_edge(source, find_edge(source, e[0], e[1])) +
+                              " of the source is not an edge of the target",
+                          {e[0], e[1]});
+  for (const Edge& e : target.edges)
+    if (!source_edges.count({std::min(e[0], e[1]), std::max(e[0], e[1])}))
+      return incompatible(Incompatibility::EdgeSetDiffers,
+                          "edge " + describe_edge(target, find_edge(target, e[0], e[1])) +
+                              " of the target is not an edge of the source",
+                          {e[0], e[1]});
+
+  // Isomorphic cyclic sequences under the correspondence <=> every vertex sees
+  // its neighbours in the same cyclic order (the sequences are traced from
+  // these orders by Algorithm 1).
+  int first_differing = -1;
+  bool all_reversed = true;  // every differing vertex is exactly reversed
+  std::vector<int> source_around, target_around;
+  for (std::size_t v = 0; v < n; ++v) {
+    std::vector<int> s = canonical_neighbours(source, source_dec.rotation, int(v));
+    std::vector<int> t = canonical_neighbours(target, target_dec.rotation, int(v));
+    if (s == t) continue;
+    if (first_differing < 0) {
+      first_differing = int(v);
+      source_around = s;
+      target_around = t;
+    }
+    if (canonical_reversed(s) != t) all_reversed = false;
+  }
+
+  // A reflection reverses every cyclic order and every cyclic sequence,
+  // the exterior one included.
+  const std::set<DirectedEdge> source_exterior = exterior_edges(source, source_dec);
+  const std::set<DirectedEdge> target_exterior = exterior_edges(target, target_dec);
+  std::set<DirectedEdge> reversed_source_exterior;
+  for (const auto& [a, b] : source_exterior) reversed_source_exterior.emplace(b, a);
+  const bool exterior_same = source_exterior == target_exterior;
+  const bool exterior_reversed = reversed_source_exterior == target_exterior;
+
+  if (all_reversed && exterior_reversed && !exterior_same) {
+    std::string reason = "the target is a mirror image of the source: ";
+    if (first_differing >= 0)
+      reason += "the cyclic order of edges is reversed at every junction (vertex " +
+                std::to_string(first_differing) + ": source " + list_text(source_around, ", ") +
+                "; target " + list_text(target_around, ", ") + ") and ";
+    reason += "the exterior sequence runs the other way (source " +
+              list_text(exterior_vertices(source_dec), " ") + "; target " +
+              list_text(exterior_vertices(target_dec), " ") + ")";
+    return incompatible(Incompatibility::MirrorImage, reason,
+                        first_differing >= 0 ? std::vector<int>{first_differing} : std::vector<int>{});
+  }
+  if (first_differing >= 0)
+    return incompatible(Incompatibility::RotationDiffers,
+                        "the cyclic order of edges around vertex " + std::to_string(first_differing) +
+                            " differs: counter-clockwise the source has neighbours " +
+                            list_text(source_around, ", ") + ", the target " +
+                            list_text(target_around, ", "),
+                        {first_differing});
+  if (!exterior_same)
+    return incompatible(Incompatibility::ExteriorDiffers,
+                        "the exterior sequences differ: the unbounded region is bounded by " +
+                            list_text(exterior_vertices(source_dec), " ") + " in the source and by " +
+                            list_text(exterior_vertices(target_dec), " ") + " in the target",
+                        {exterior_vertices(source_dec).front(), exterior_vertices(target_dec).front()});
+  return CompatibilityReport{};
+}
+
+CompatibilityReport check_compatibility(const StickFigure& source, const StickFigure& target) {
+  return check_compatibility(source, decompose(source), target, decompose(target));
+}
+
+void require_compatible(const StickFigure& source, const StickFigure& target) {
+  const CompatibilityReport report = check_compatibility(source, target);
+  if (!report.compatible()) throw IncompatibleFiguresError("incompatible figures: " + report.reason);
+}
+
+}  // namespace stickmorph

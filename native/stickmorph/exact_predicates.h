@@ -1,0 +1,44 @@
+// Exact geometric predicates on double coordinates.
+//
+// Thin wrappers over CGAL::Exact_predicates_inexact_constructions_kernel, kept
+// in one translation unit so that CGAL is compiled once. Every geometric
+// decision in stickmorph goes through these functions: results are exact for
+// the given doubles, never subject to rounding.
+#pragma once
+
+#include "stickmorph/stick_figure.h"
+
+namespace stickmorph {
+
+/// Sign of the signed area of triangle (a, b, c): +1 counter-clockwise,
+/// -1 clockwise, 0 collinear.
+int orientation(const Vec2& a, const Vec2& b, const Vec2& c);
+
+/// Lexicographic comparison of (x, y): -1, 0 or +1.
+int compare_xy(const Vec2& a, const Vec2& b);
+
+/// Angular comparison of directions (p - origin) and (q - origin),
+/// counter-clockwise from the positive x axis (angle 0 inclusive, 2*pi
+/// exclusive): -1 if p comes first, 0 if same direction, +1 otherwise.
+/// p and q must differ from origin.
+int compare_direction_ccw(const Vec2& origin, const Vec2& p, const Vec2& q);
+
+/// True iff p lies on the closed segment [a, b].
+bool on_segment(const Vec2& p, const Vec2& a, const Vec2& b);
+
+/// How two closed segments [a, b] and [c, d] meet.
+enum class SegmentContact {
+  Disjoint,       ///< no common point
+  Crossing,       ///< one common point, interior to both
+  Touching,       ///< one common point, an endpoint of at least one segment
+  Overlapping,    ///< collinear with a common sub-segment of positive length
+};
+SegmentContact segment_contact(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d);
+
+/// Exact sign of the signed area (shoelace sum) of a closed polygon
+/// given by its corner positions, in order: +1 counter-clockwise, -1
+/// clockwise, 0 zero area. Uses exact arithmetic (not an orientation
+/// predicate cascade), so it is correct for any corner sequence.
+int signed_area_sign(const std::vector<Vec2>& corners);
+
+}  // namespace stickmorph

@@ -1,0 +1,119 @@
+// Figure builders shared by the Catch2 tests.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "stickmorph/exact_predicates.h"
+#include "stickmorph/stick_figure.h"
+
+namespace stickmorph::test {
+
+using RawEdges = std::vector<std::array<std::int64_t, 2>>;
+
+inline StickFigure figure(std::vector<Vec2> vertices, RawEdges edges) {
+  return make_stick_figure(std::move(vertices), edges);
+}
+
+/// Closed polygon through the points in the given order.
+inline StickFigure polygon(std::vector<Vec2> corners) {
+  RawEdges edges;
+  const std::int64_t n = std::int64_t(corners.size());
+  for (std::int64_t i = 0; i < n; ++i) edges.push_back({i, (i + 1) % n});
+  return figure(std::move(corners), edges);
+}
+
+/// Open polyline through the points in order.
+inline StickFigure polyline(std::vector<Vec2> points) {
+  RawEdges edges;
+  for (std::int64_t i = 0; i + 1 < std::int64_t(points.size()); ++i) edges.push_back({i, i + 1});
+  return figure(std::move(points), edges);
+}
+
+/// Regular n-gon of radius r, counter-clockwise.
+inline std::vector<Vec2> regular(int n, double r = 1.0, double phase = 0.0) {
+  std::vector<Vec2> pts;
+  for (int i = 0; i < n; ++i) {
+    const double a = phase + 2 * 3.14159265358979323846 * i / n;
+    pts.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  return pts;
+}
+
+/// A k by k grid of points triangulated by one diagonal per cell:
+/// 2*(k-1)^2 triangles.
+inline StickFigure grid_triangulation(int k) {
+  std::vector<Vec2> pts;
+  RawEdges edges;
+  auto id = [k](int i, int j) { return std::int64_t(i * k + j); };
+  for (int i = 0; i < k; ++i)
+    for (int j = 0; j < k; ++j) pts.push_back({double(j), double(i)});
+  for (int i = 0; i < k; ++i)
+    for (int j = 0; j < k; ++j) {
+      if (j + 1 < k) edges.push_back({id(i, j), id(i, j + 1)});
+      if (i + 1 < k) edges.push_back({id(i, j), id(i + 1, j)});
+      if (i + 1 < k && j + 1 < k) edges.push_back({id(i, j), id(i + 1, j + 1)});
+    }
+  return figure(std::move(pts), edges);
+}
+
+/// A random connected plane graph: a greedy triangulation of random points
+/// (shortest segments first, kept when they meet nothing), thinned by
+/// removing random edges while it stays connected. Produces faces with
+/// dangling edges, cut vertices and tree parts.
+inline StickFigure random_plane_graph(std::mt19937& rng, int n, double keep_fraction) {
+  std::uniform_real_distribution<double> coord(-10.0, 10.0);
+  std::vector<Vec2> pts(n);
+  for (Vec2& p : pts) p = {coord(rng), coord(rng)};
+  struct Candidate { double length; int a, b; };
+  std::vector<Candidate> candidates;
+  for (int a = 0; a < n; ++a)
+    for (int b = a + 1; b < n; ++b)
+      candidates.push_back({std::hypot(pts[a][0] - pts[b][0], pts[a][1] - pts[b][1]), a, b});
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Candidate& x, const Candidate& y) { return x.length < y.length; });
+  std::vector<Edge> kept;
+  for (const Candidate& c : candidates) {
+    bool ok = true;
+    for (const Edge& e : kept) {
+      const bool incident = e[0] == c.a || e[0] == c.b || e[1] == c.a || e[1] == c.b;
+      const SegmentContact contact = segment_contact(pts[c.a], pts[c.b], pts[e[0]], pts[e[1]]);
+      if (contact == SegmentContact::Disjoint || (incident && contact == SegmentContact::Touching))
+        continue;
+      ok = false;
+      break;
+    }
+    for (int v = 0; ok && v < n; ++v)
+      if (v != c.a && v != c.b && on_segment(pts[v], pts[c.a], pts[c.b])) ok = false;
+    if (ok) kept.push_back({c.a, c.b});
+  }
+  // Thin: drop random edges whose removal keeps the graph connected.
+  std::shuffle(kept.begin(), kept.end(), rng);
+  std::bernoulli_distribution drop(1.0 - keep_fraction);
+  auto connected_without = [&](std::size_t skip) {
+    std::vector<std::vector<int>> adj(n);
+    for (std::size_t i = 0; i < kept.size(); ++i)
+      if (i != skip) adj[kept[i][0]].push_back(kept[i][1]), adj[kept[i][1]].push_back(kept[i][0]);
+    std::vector<int> seen(n, 0), stack{0};
+    seen[0] = 1;
+    int count = 1;
+    while (!stack.empty()) {
+      int v = stack.back();
+      stack.pop_back();
+      for (int w : adj[v])
+        if (!seen[w]) seen[w] = 1, ++count, stack.push_back(w);
+    }
+    return count == n;
+  };
+  for (std::size_t i = 0; i < kept.size();) {
+    if (drop(rng) && connected_without(i)) kept.erase(kept.begin() + long(i));
+    else ++i;
+  }
+  RawEdges raw;
+  for (const Edge& e : kept) raw.push_back({e[0], e[1]});
+  return figure(std::move(pts), raw);
+}
+
+}  // namespace stickmorph::test

@@ -1,0 +1,32 @@
+"""Shared fixtures: where the built CLI, the built module and the test data are.
+
+The build directory comes from STICKMORPH_BUILD_DIR (default: <repo>/build),
+the layout that `cmake -S . -B build` produces (../shared/FORMAT.md).
+"""
+import os
+import pathlib
+import sys
+
+import pytest
+
+REPO = pathlib.Path(__file__).resolve().parents[2]
+BUILD = pathlib.Path(os.environ.get("STICKMORPH_BUILD_DIR", REPO / "build")).resolve()
+DATA = REPO / "tests" / "data"
+
+# The extension module is built into <build>/python (native/CMakeLists.txt).
+sys.path.insert(0, str(BUILD / "python"))
+
+
+@pytest.fixture(scope="session")
+def cli():
+    """Path of the built `stickmorph` executable."""
+    path = BUILD / "stickmorph"
+    if not path.exists():
+        pytest.fail(f"{path} is missing: build the project first (scripts/test.sh does)")
+    return path
+
+
+@pytest.fixture(scope="session")
+def data_dir():
+    """tests/data: golden figures and malformed inputs."""
+    return DATA
