@@ -120,7 +120,9 @@ CompatibilityReport check_compatibility(const StickFigure& source, const Decompo
   const bool exterior_same = source_exterior == target_exterior;
   const bool exterior_reversed = reversed_source_exterior == target_exterior;
 
-  if (all_reversed && exterior_reversed && !exterior_same) {
+  // A tree's exterior walks every edge both ways, so it equals its own
+  // reverse; then the reversed junctions alone reveal the reflection.
+  if (all_reversed && exterior_reversed && (first_differing >= 0 || !exterior_same)) {
     std::string reason = "the target is a mirror image of the source: ";
     if (first_differing >= 0)
       reason += "the cyclic order of edges is reversed at every junction (vertex " +
@@ -139,12 +141,24 @@ CompatibilityReport check_compatibility(const StickFigure& source, const Decompo
                             list_text(source_around, ", ") + ", the target " +
                             list_text(target_around, ", "),
                         {first_differing});
-  if (!exterior_same)
+  if (!exterior_same) {
+    // Name a side of the source's unbounded region that bounds an interior
+    // region in the target.
+    DirectedEdge witness{-1, -1};
+    for (const DirectedEdge& side : source_exterior)
+      if (!target_exterior.count(side)) {
+        witness = side;
+        break;
+      }
     return incompatible(Incompatibility::ExteriorDiffers,
                         "the exterior sequences differ: the unbounded region is bounded by " +
                             list_text(exterior_vertices(source_dec), " ") + " in the source and by " +
-                            list_text(exterior_vertices(target_dec), " ") + " in the target",
-                        {exterior_vertices(source_dec).front(), exterior_vertices(target_dec).front()});
+                            list_text(exterior_vertices(target_dec), " ") +
+                            " in the target (the edge from vertex " + std::to_string(witness.first) +
+                            " to vertex " + std::to_string(witness.second) +
+                            " faces the unbounded region only in the source)",
+                        {witness.first, witness.second});
+  }
   return CompatibilityReport{};
 }
 

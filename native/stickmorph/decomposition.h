@@ -65,7 +65,7 @@ RotationSystem rotation_system(const StickFigure& figure);
 
 /// Algorithm 1. `figure` must be valid (make_stick_figure). A figure with a
 /// single vertex and no edges decomposes into one exterior sequence with that
-/// vertex and no darts.
+/// vertex, no darts and angle_sum 0 (it has no corners to sum).
 ///
 /// Interior and exterior are told apart by the paper's angle-sum rule. Each
 /// angle's half-turn class (below, at or above pi) is decided by an exact

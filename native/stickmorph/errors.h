@@ -76,6 +76,13 @@ class IncompatibleFiguresError : public Error {
   using Error::Error;
 };
 
+/// A result failed exact verification and could not be repaired: the engine
+/// refuses to return it. The message names the face and the triangle.
+class VerificationError : public Error {
+ public:
+  using Error::Error;
+};
+
 /// An internal consistency check failed. This is a bug in stickmorph, never
 /// the user's fault; the message says which invariant broke and where.
 class InternalError : public Error {

@@ -95,6 +95,9 @@ TEST_CASE("the same sequences with another one exterior", "[check_compatibility]
   const CompatibilityReport r = check_compatibility(s, t);
   CHECK(r.kind == Incompatibility::ExteriorDiffers);
   CHECK_THAT(r.reason, Contains("exterior sequences differ") && Contains("0 2 1 4") && Contains("0 3 1 2"));
+  // The witness is a side of the source's exterior that is interior in the target.
+  REQUIRE(r.vertices.size() == 2);
+  CHECK(r.vertices[0] != r.vertices[1]);
 }
 
 TEST_CASE("vertex and edge sets must correspond", "[check_compatibility]") {
@@ -119,4 +122,13 @@ TEST_CASE("require_compatible throws the reason", "[check_compatibility]") {
   CHECK_NOTHROW(require_compatible(p, p));
   CHECK_THROWS_WITH(require_compatible(p, transformed(p, -1, 0, 0, 1, 0, 0)), Contains("mirror image"));
   CHECK_THROWS_AS(require_compatible(p, transformed(p, -1, 0, 0, 1, 0, 0)), IncompatibleFiguresError);
+}
+
+TEST_CASE("a mirrored tree is a mirror image, not just another rotation", "[check_compatibility]") {
+  // A tree's exterior sequence walks every edge in both directions, so it is
+  // its own reverse; the reversed junction must still be named a reflection.
+  const StickFigure tree = figure({{0, 0}, {1, 0}, {0, 1}, {-1, -1}, {2, 1}}, {{0, 1}, {0, 2}, {0, 3}, {1, 4}});
+  const CompatibilityReport r = check_compatibility(tree, transformed(tree, -1, 0, 0, 1, 0, 0));
+  CHECK(r.kind == Incompatibility::MirrorImage);
+  CHECK(r.vertices == std::vector<int>{0});
 }

@@ -1,0 +1,519 @@
+// The `stickmorph` Python module: a thin shell over the C++ engine.
+//
+// Everything this file does is conversion: NumPy arrays and Python objects in,
+// engine calls, NumPy arrays and Python objects out, and engine exceptions onto
+// Python exception classes. Validation, geometry and compatibility decisions
+// all live in the engine, so the module, the CLI and the C++ tests agree.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "stickmorph/compatibility.h"
+#include "stickmorph/decomposition.h"
+#include "stickmorph/errors.h"
+#include "stickmorph/figure_io.h"
+#include "stickmorph/stick_figure.h"
+
+namespace py = pybind11;
+namespace sm = stickmorph;
+
+namespace {
+
+// The Python exception classes. They are created once when the module is
+// imported and owned by the module object; the handles deliberately hold a
+// reference that is never released, because the translator may run at any
+// time while the interpreter lives and static py::object destructors would run
+// after the interpreter is gone.
+py::handle g_stickmorph_error;
+py::handle g_json_error;
+py::handle g_invalid_figure_error;
+py::handle g_invalid_argument_error;
+py::handle g_incompatible_figures_error;
+py::handle g_internal_error;
+
+py::handle new_exception(py::module_& m, const char* name, py::handle base, const char* doc) {
+  const std::string qualified = std::string("stickmorph.") + name;
+  PyObject* type = PyErr_NewExceptionWithDoc(qualified.c_str(), doc, base.ptr(), nullptr);
+  if (type == nullptr) throw py::error_already_set();
+  m.add_object(name, py::handle(type));
+  return py::handle(type);
+}
+
+const char* defect_name(sm::FigureDefect defect) {
+  switch (defect) {
+    case sm::FigureDefect::NoVertices: return "no_vertices";
+    case sm::FigureDefect::NonFiniteCoordinate: return "non_finite_coordinate";
+    case sm::FigureDefect::CoordinateTooLarge: return "coordinate_too_large";
+    case sm::FigureDefect::EdgeIndexOutOfRange: return "edge_index_out_of_range";
+    case sm::FigureDefect::SelfLoop: return "self_loop";
+    case sm::FigureDefect::DuplicateEdge: return "duplicate_edge";
+    case sm::FigureDefect::CoincidentVertices: return "coincident_vertices";
+    case sm::FigureDefect::CrossingEdges: return "crossing_edges";
+    case sm::FigureDefect::OverlappingEdges: return "overlapping_edges";
+    case sm::FigureDefect::VertexOnEdge: return "vertex_on_edge";
+    case sm::FigureDefect::Disconnected: return "disconnected";
+  }
+  // Only reachable if the enum grows without this table: say so rather than
+  // hand Python a wrong name.
+  throw sm::InternalError("stickmorph module: unknown FigureDefect value " +
+                          std::to_string(static_cast<int>(defect)));
+}
+
+const char* incompatibility_name(sm::Incompatibility kind) {
+  switch (kind) {
+    case sm::Incompatibility::None: return "none";
+    case sm::Incompatibility::VertexCountDiffers: return "vertex_count_differs";
+    case sm::Incompatibility::EdgeSetDiffers: return "edge_set_differs";
+    case sm::Incompatibility::MirrorImage: return "mirror_image";
+    case sm::Incompatibility::RotationDiffers: return "rotation_differs";
+    case sm::Incompatibility::ExteriorDiffers: return "exterior_differs";
+  }
+  throw sm::InternalError("stickmorph module: unknown Incompatibility value " +
+                          std::to_string(static_cast<int>(kind)));
+}
+
+// Engine text as a Python str. Messages can carry bytes that are not UTF-8
+// (a file name, a name field read from a file); showing them as \x escapes
+// keeps the exception intact where a strict decode would replace it with a
+// UnicodeDecodeError.
+py::str to_str(const std::string& text) {
+  PyObject* object = PyUnicode_DecodeUTF8(text.data(), static_cast<Py_ssize_t>(text.size()),
+                                          "backslashreplace");
+  if (object == nullptr) throw py::error_already_set();
+  return py::reinterpret_steal<py::str>(object);
+}
+
+void set_error(py::handle type, const char* message) {
+  PyErr_SetObject(type.ptr(), to_str(message).ptr());
+}
+
+py::list to_list(const std::vector<int>& values) {
+  py::list list;
+  for (int v : values) list.append(v);
+  return list;
+}
+
+template <typename Int>
+py::array_t<std::int64_t> to_int64_array(const std::vector<Int>& values) {
+  py::array_t<std::int64_t> array(static_cast<py::ssize_t>(values.size()));
+  auto out = array.mutable_unchecked<1>();
+  for (std::size_t i = 0; i < values.size(); ++i) out(static_cast<py::ssize_t>(i)) = values[i];
+  return array;
+}
+
+// The Python-side repr of a shape tuple, e.g. "(5, 3)" or "(2,)", so that
+// messages read exactly like NumPy's own.
+std::string shape_text(const py::array& array) {
+  return py::str(array.attr("shape")).cast<std::string>();
+}
+
+std::string dtype_text(const py::array& array) {
+  return py::str(array.dtype()).cast<std::string>();
+}
+
+py::array as_array(py::handle object, const std::string& name) {
+  try {
+    return py::module_::import("numpy").attr("asarray")(object).cast<py::array>();
+  } catch (py::error_already_set& e) {
+    // Ragged nested lists and similar: NumPy's own explanation is the most
+    // precise one available.
+    throw sm::InvalidArgumentError(name + " cannot be converted to an array: " +
+                                   py::str(e.value()).cast<std::string>());
+  }
+}
+
+// An (n, 2) array, or an empty one-dimensional array (what `[]` becomes).
+bool has_pair_shape(const py::array& array) {
+  if (array.ndim() == 2) return array.shape(1) == 2;
+  return array.ndim() == 1 && array.shape(0) == 0;
+}
+
+std::vector<sm::Vec2> to_vertices(py::handle object, const std::string& name) {
+  const py::array array = as_array(object, name);
+  if (!has_pair_shape(array))
+    throw sm::InvalidArgumentError(name + " must have shape (#V, 2), got " + shape_text(array));
+  // Booleans, strings, objects and complex numbers convert to float64 only
+  // by accident or not at all; coordinates are real numbers.
+  const char kind = array.dtype().kind();
+  if (kind != 'i' && kind != 'u' && kind != 'f')
+    throw sm::InvalidArgumentError(name + " must hold real numbers, got dtype " + dtype_text(array));
+  const auto values =
+      py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
+  if (!values) throw py::error_already_set();
+  const py::ssize_t n = array.ndim() == 2 ? array.shape(0) : 0;
+  const double* data = values.data();
+  std::vector<sm::Vec2> vertices(static_cast<std::size_t>(n));
+  for (py::ssize_t i = 0; i < n; ++i) vertices[i] = {data[2 * i], data[2 * i + 1]};
+  return vertices;
+}
+
+std::vector<std::array<std::int64_t, 2>> to_edges(py::handle object, const std::string& name) {
+  const py::array array = as_array(object, name);
+  if (!has_pair_shape(array))
+    throw sm::InvalidArgumentError(name + " must have shape (#E, 2), got " + shape_text(array));
+  const py::ssize_t n = array.ndim() == 2 ? array.shape(0) : 0;
+  std::vector<std::array<std::int64_t, 2>> edges(static_cast<std::size_t>(n));
+  // Messages about one row name it the way the engine names edges; a second
+  // edge list (check_compatibility's target_edges) is told apart by a prefix.
+  const std::string row_prefix = name == "edges" ? std::string("edge ") : name + ": edge ";
+  const auto not_int64 = [&](py::ssize_t row, const std::string& value) {
+    return sm::InvalidArgumentError(row_prefix + std::to_string(row) + ": index " + value +
+                                    " does not fit in a 64-bit signed integer");
+  };
+
+  const char kind = array.dtype().kind();
+  if (kind == 'i' || (kind == 'u' && array.dtype().itemsize() < 8)) {
+    // Every such value is an int64 already.
+    const auto values =
+        py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(array);
+    if (!values) throw py::error_already_set();
+    const std::int64_t* data = values.data();
+    for (py::ssize_t i = 0; i < n; ++i) edges[i] = {data[2 * i], data[2 * i + 1]};
+  } else if (kind == 'u') {
+    // uint64 above INT64_MAX would wrap to a negative index: refuse instead.
+    const auto values =
+        py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>::ensure(array);
+    if (!values) throw py::error_already_set();
+    const std::uint64_t* data = values.data();
+    for (py::ssize_t i = 0; i < n; ++i) {
+      for (int k = 0; k < 2; ++k) {
+        const std::uint64_t v = data[2 * i + k];
+        if (v > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
+          throw not_int64(i, std::to_string(v));
+        edges[i][k] = static_cast<std::int64_t>(v);
+      }
+    }
+  } else if (kind == 'f' && array.dtype().itemsize() <= 8) {
+    // Float arrays are common (np.loadtxt, JSON through Python): accept them
+    // when every value is exactly an integer, never round or truncate. Long
+    // double is excluded because converting it to double could itself round
+    // a non-integer onto an integer.
+    const auto values =
+        py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
+    if (!values) throw py::error_already_set();
+    const double* data = values.data();
+    // 2^63 is exactly representable; every integral double in [-2^63, 2^63)
+    // converts to int64 without loss.
+    constexpr double kTwo63 = 9223372036854775808.0;
+    for (py::ssize_t i = 0; i < n; ++i) {
+      for (int k = 0; k < 2; ++k) {
+        const double v = data[2 * i + k];
+        // Python's repr: the shortest text that reads back as the same value.
+        const auto text = [v] { return py::repr(py::float_(v)).cast<std::string>(); };
+        if (!std::isfinite(v) || v != std::floor(v))
+          throw sm::InvalidArgumentError(row_prefix + std::to_string(i) + ": index " + text() +
+                                         " is not an integer");
+        if (v < -kTwo63 || v >= kTwo63) throw not_int64(i, text());
+        edges[i][k] = static_cast<std::int64_t>(v);
+      }
+    }
+  } else {
+    throw sm::InvalidArgumentError(name + " must hold integer vertex indices, got dtype " +
+                                   dtype_text(array));
+  }
+  return edges;
+}
+
+// Converts and validates one figure. Validation (exact predicates over all
+// nearby edge pairs) takes noticeable time on large figures, so it runs
+// without the GIL; the conversions before it need the GIL.
+sm::StickFigure make_figure(py::handle vertices, py::handle edges, const std::string& vertices_name,
+                            const std::string& edges_name) {
+  std::vector<sm::Vec2> positions = to_vertices(vertices, vertices_name);
+  const std::vector<std::array<std::int64_t, 2>> indices = to_edges(edges, edges_name);
+  py::gil_scoped_release release;
+  return sm::make_stick_figure(std::move(positions), indices);
+}
+
+// check_compatibility validates two figures from one call, so a defect is
+// ambiguous unless the message says which figure it is in; the CLI likewise
+// prefixes the file name. Defect and indices are kept.
+sm::StickFigure make_named_figure(py::handle vertices, py::handle edges,
+                                  const std::string& vertices_name, const std::string& edges_name,
+                                  const std::string& figure) {
+  try {
+    return make_figure(vertices, edges, vertices_name, edges_name);
+  } catch (const sm::InvalidFigureError& e) {
+    throw sm::InvalidFigureError(e.defect(), figure + ": " + e.what(), e.vertices(), e.edges());
+  }
+}
+
+void translate_exception(std::exception_ptr pointer) {
+  try {
+    if (pointer) std::rethrow_exception(pointer);
+  } catch (const sm::InvalidFigureError& e) {
+    // Build the instance here so that the attributes travel with it; a class
+    // alone (PyErr_SetString) would carry only the message.
+    const py::object type = py::reinterpret_borrow<py::object>(g_invalid_figure_error);
+    py::object instance = type(to_str(e.what()));
+    instance.attr("defect") = defect_name(e.defect());
+    instance.attr("vertices") = to_list(e.vertices());
+    instance.attr("edges") = to_list(e.edges());
+    PyErr_SetObject(g_invalid_figure_error.ptr(), instance.ptr());
+  } catch (const sm::JsonError& e) {
+    set_error(g_json_error, e.what());
+  } catch (const sm::InvalidArgumentError& e) {
+    set_error(g_invalid_argument_error, e.what());
+  } catch (const sm::IncompatibleFiguresError& e) {
+    set_error(g_incompatible_figures_error, e.what());
+  } catch (const sm::InternalError& e) {
+    set_error(g_internal_error, e.what());
+  } catch (const sm::Error& e) {
+    set_error(g_stickmorph_error, e.what());
+  }
+}
+
+const char* const kModuleDoc = R"doc(Morphing of stick figures (connected straight-line plane graphs).
+
+Surazhsky & Gotsman, "Morphing Stick Figures Using Optimized Compatible
+Triangulations", Pacific Graphics 2001. A figure is given as
+
+  vertices  #V by 2 array-like of float64 coordinates
+  edges     #E by 2 array-like of integer vertex indices (0-based, undirected)
+
+Every function validates its figures first and raises InvalidFigureError
+naming the offending vertex and edge indices. Exception messages are the
+engine's, the same text the `stickmorph` command prints after "error: ".)doc";
+
+}  // namespace
+
+PYBIND11_MODULE(stickmorph, m) {
+  m.doc() = kModuleDoc;
+  // Keep in step with project(VERSION) in the top-level CMakeLists.txt.
+  m.attr("__version__") = STICKMORPH_VERSION;  // from CMake
+
+  g_stickmorph_error = new_exception(
+      m, "StickMorphError", PyExc_ValueError,
+      "Base of the errors stickmorph reports about its input (a ValueError).");
+  g_json_error = new_exception(
+      m, "JsonError", g_stickmorph_error,
+      "A figure file that is not valid JSON or has the wrong shape; the message names line and "
+      "column.");
+  g_invalid_figure_error = new_exception(
+      m, "InvalidFigureError", g_stickmorph_error,
+      "A figure that is not a connected straight-line plane graph.\n\n"
+      "Attributes (set on instances raised by stickmorph; None on the class):\n"
+      "  defect    what is wrong, e.g. 'crossing_edges', 'disconnected'\n"
+      "  vertices  list of the vertex indices named in the message\n"
+      "  edges     list of the edge indices named in the message");
+  for (const char* attribute : {"defect", "vertices", "edges"})
+    py::setattr(g_invalid_figure_error, attribute, py::none());
+  g_invalid_argument_error = new_exception(
+      m, "InvalidArgumentError", g_stickmorph_error,
+      "An argument of the wrong shape or type, independently of geometry.");
+  g_incompatible_figures_error = new_exception(
+      m, "IncompatibleFiguresError", g_stickmorph_error,
+      "Two figures that an operation needs to be compatible are not.");
+  // Not a StickMorphError: it is never the caller's fault, so code catching
+  // ValueError for bad input must not swallow it.
+  g_internal_error = new_exception(
+      m, "InternalError", PyExc_RuntimeError,
+      "An internal consistency check of stickmorph failed: a bug, never the caller's fault.");
+
+  py::register_local_exception_translator(translate_exception);
+
+  py::class_<sm::CompatibilityReport>(m, "CompatibilityReport",
+                                      "The answer of check_compatibility. True iff compatible.")
+      .def_property_readonly("compatible", &sm::CompatibilityReport::compatible,
+                             "True iff the two figures are compatible.")
+      .def_property_readonly(
+          "kind",
+          [](const sm::CompatibilityReport& r) { return incompatibility_name(r.kind); },
+          "Why not: 'none', 'vertex_count_differs', 'edge_set_differs', 'mirror_image', "
+          "'rotation_differs' or 'exterior_differs'.")
+      .def_property_readonly(
+          "reason", [](const sm::CompatibilityReport& r) { return r.reason; },
+          "Explanation naming vertices; empty when compatible.")
+      .def_property_readonly(
+          "vertices", [](const sm::CompatibilityReport& r) { return to_list(r.vertices); },
+          "List of the vertex indices named in the reason.")
+      .def("__bool__", &sm::CompatibilityReport::compatible)
+      .def("__repr__", [](const sm::CompatibilityReport& r) {
+        if (r.compatible()) return std::string("CompatibilityReport(compatible=True)");
+        return "CompatibilityReport(compatible=False, kind='" +
+               std::string(incompatibility_name(r.kind)) +
+               "', vertices=" + py::repr(to_list(r.vertices)).cast<std::string>() +
+               ", reason=" + py::repr(py::str(r.reason)).cast<std::string>() + ")";
+      });
+
+  m.def(
+      "validate",
+      [](const py::object& vertices, const py::object& edges) { make_figure(vertices, edges, "vertices", "edges"); },
+      py::arg("vertices"), py::arg("edges"),
+      R"doc(Checks that a figure is a valid stick figure.
+
+Args:
+  vertices: #V by 2 float64 array-like of coordinates.
+  edges: #E by 2 integer array-like of vertex indices ([] for a single vertex).
+
+Returns:
+  None.
+
+Raises:
+  InvalidFigureError: the figure is not a connected straight-line plane graph;
+    its `defect`, `vertices` and `edges` say what and where.
+  InvalidArgumentError: an array of the wrong shape or type.)doc");
+
+  m.def(
+      "load_figure",
+      [](const py::object& path) {
+        // os.fsencode gives the bytes the OS uses for str (surrogate escapes
+        // included), bytes and os.PathLike alike.
+        const std::string file =
+            py::module_::import("os").attr("fsencode")(path).cast<std::string>();
+        sm::StickFigure figure;
+        {
+          py::gil_scoped_release release;
+          figure = sm::read_figure_file(file);
+        }
+        const auto n = static_cast<py::ssize_t>(figure.vertices.size());
+        const auto e = static_cast<py::ssize_t>(figure.edges.size());
+        py::array_t<double> vertices({n, py::ssize_t{2}});
+        auto v = vertices.mutable_unchecked<2>();
+        for (py::ssize_t i = 0; i < n; ++i) {
+          v(i, 0) = figure.vertices[i][0];
+          v(i, 1) = figure.vertices[i][1];
+        }
+        py::array_t<std::int64_t> edges({e, py::ssize_t{2}});
+        auto w = edges.mutable_unchecked<2>();
+        for (py::ssize_t i = 0; i < e; ++i) {
+          w(i, 0) = figure.edges[i][0];
+          w(i, 1) = figure.edges[i][1];
+        }
+        py::dict result;
+        result["name"] = to_str(figure.name);
+        result["vertices"] = vertices;
+        result["edges"] = edges;
+        return result;
+      },
+      py::arg("path"),
+      R"doc(Reads and validates a stick figure file (JSON, see docs/CLI.md).
+
+Args:
+  path: str or os.PathLike.
+
+Returns:
+  dict with "name" (str), "vertices" (#V by 2 float64 ndarray) and
+  "edges" (#E by 2 int64 ndarray), in file order.
+
+Raises:
+  JsonError: unreadable file, malformed JSON or a field of the wrong shape.
+  InvalidFigureError: the file describes an invalid figure.)doc");
+
+  m.def(
+      "rotation_system",
+      [](const py::object& vertices, const py::object& edges) {
+        const sm::StickFigure figure = make_figure(vertices, edges, "vertices", "edges");
+        sm::RotationSystem rotation;
+        {
+          py::gil_scoped_release release;
+          rotation = sm::rotation_system(figure);
+        }
+        py::list result;
+        for (const std::vector<int>& darts : rotation.outgoing_ccw) {
+          std::vector<int> neighbours;
+          neighbours.reserve(darts.size());
+          for (int dart : darts) neighbours.push_back(sm::dart_head(figure, dart));
+          result.append(to_int64_array(neighbours));
+        }
+        return result;
+      },
+      py::arg("vertices"), py::arg("edges"),
+      R"doc(The cyclic order of edges around each vertex.
+
+Args:
+  vertices: #V by 2 float64 array-like of coordinates.
+  edges: #E by 2 integer array-like of vertex indices.
+
+Returns:
+  list of #V int64 ndarrays; entry v holds the neighbours of vertex v in
+  counter-clockwise order, starting from the first direction at or after the
+  positive x axis. Decided by exact predicates.
+
+Raises:
+  InvalidFigureError, InvalidArgumentError: as validate().)doc");
+
+  m.def(
+      "decompose",
+      [](const py::object& vertices, const py::object& edges) {
+        const sm::StickFigure figure = make_figure(vertices, edges, "vertices", "edges");
+        sm::Decomposition decomposition;
+        {
+          py::gil_scoped_release release;
+          decomposition = sm::decompose(figure);
+        }
+        py::list result;
+        for (const sm::CyclicSequence& sequence : decomposition.sequences) {
+          py::dict entry;
+          entry["vertices"] = to_int64_array(sequence.vertices);
+          entry["exterior"] = sequence.exterior;
+          entry["angle_sum"] = sequence.angle_sum;
+          result.append(entry);
+        }
+        return result;
+      },
+      py::arg("vertices"), py::arg("edges"),
+      R"doc(Decomposes a figure into cyclic sequences (paper, Algorithm 1).
+
+Args:
+  vertices: #V by 2 float64 array-like of coordinates.
+  edges: #E by 2 integer array-like of vertex indices.
+
+Returns:
+  list of dicts, one per cyclic sequence in the order Algorithm 1 finds them:
+    "vertices"  int64 ndarray of the n vertices along the sequence; a vertex
+                repeats where the walk passes it more than once
+    "exterior"  True for the one sequence bounding the unbounded region
+    "angle_sum" float, sum of the n polygon angles: pi*(n-2) for an
+                interior sequence, pi*(n+2) for the exterior one
+  Interior sequences run counter-clockwise, the exterior one clockwise. A
+  single vertex without edges gives one exterior sequence [0], angle_sum 0.
+
+Raises:
+  InvalidFigureError, InvalidArgumentError: as validate().)doc");
+
+  m.def(
+      "check_compatibility",
+      [](const py::object& source_vertices, const py::object& target_vertices,
+         const py::object& edges, const py::object& target_edges) {
+        const sm::StickFigure source =
+            make_named_figure(source_vertices, edges, "source_vertices", "edges", "source");
+        const sm::StickFigure target =
+            target_edges.is_none()
+                ? make_named_figure(target_vertices, edges, "target_vertices", "edges", "target")
+                : make_named_figure(target_vertices, target_edges, "target_vertices",
+                                    "target_edges", "target");
+        py::gil_scoped_release release;
+        return sm::check_compatibility(source, target);
+      },
+      py::arg("source_vertices"), py::arg("target_vertices"), py::arg("edges"),
+      py::arg("target_edges") = py::none(),
+      R"doc(Decides whether two corresponding figures are compatible (paper, 2.1).
+
+Vertex i of the source corresponds to vertex i of the target. Compatible
+figures have the same cyclic sequences with the same orientation and the same
+exterior sequence.
+
+Args:
+  source_vertices: #V by 2 float64 array-like, source coordinates.
+  target_vertices: #V by 2 float64 array-like, target coordinates.
+  edges: #E by 2 integer array-like of vertex indices of the source (and of
+    the target unless target_edges is given).
+  target_edges: optional #E by 2 integer array-like, the target's edge list;
+    order and direction may differ from edges.
+
+Returns:
+  CompatibilityReport: truthy iff compatible; `kind`, `reason` and `vertices`
+  say why not.
+
+Raises:
+  InvalidFigureError: the source or the target is invalid (the message
+    starts with "source: " or "target: ").
+  InvalidArgumentError: an array of the wrong shape or type.)doc");
+}

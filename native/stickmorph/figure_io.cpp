@@ -1,0 +1,192 @@
+#include "stickmorph/figure_io.h"
+
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+#include "stickmorph/errors.h"
+#include "stickmorph/json.h"
+
+namespace stickmorph {
+namespace {
+
+// A figure file larger than this is refused instead of read. A million
+// vertices at full double precision take about 45 MB of JSON. The document
+// model costs about 35 times the size of dense input (1.7 GB for 48 MB of
+// "[0,0],"), so the cap bounds memory as well as keeping a mistaken argument
+// such as /dev/zero from reading until memory runs out.
+constexpr std::size_t kMaxFigureFileBytes = std::size_t{64} << 20;
+
+// Builds shape errors: "<origin>: line L, column C: <what>".
+class ShapeErrors {
+ public:
+  explicit ShapeErrors(const std::string& origin) : prefix_(origin.empty() ? "" : origin + ": ") {}
+
+  [[noreturn]] void fail(const JsonValue& at, const std::string& what) const {
+    throw JsonError(prefix_ + describe_location(at.location()) + ": " + what);
+  }
+
+  const std::string& prefix() const { return prefix_; }
+
+ private:
+  std::string prefix_;
+};
+
+// "an array of 3 values" rather than just "an array" when the length is
+// what is wrong.
+std::string describe_shape(const JsonValue& value) {
+  if (!value.is_array()) return describe_kind(value.kind());
+  const std::size_t size = value.as_array().size();
+  if (size == 0) return "an empty array";
+  return "an array of " + std::to_string(size) + (size == 1 ? " value" : " values");
+}
+
+const JsonValue& require_member(const JsonValue& figure, const char* key,
+                                const ShapeErrors& errors) {
+  const JsonValue* member = figure.find(key);
+  if (member == nullptr) {
+    errors.fail(figure, std::string("missing field \"") + key + "\" in the figure object");
+  }
+  return *member;
+}
+
+std::vector<Vec2> read_vertices(const JsonValue& list, const ShapeErrors& errors) {
+  if (!list.is_array()) {
+    errors.fail(list, std::string("\"vertices\" must be an array of [x, y] pairs, got ") +
+                          describe_kind(list.kind()));
+  }
+  std::vector<Vec2> vertices;
+  vertices.reserve(list.as_array().size());
+  for (const JsonValue& entry : list.as_array()) {
+    // Built only for a message: a figure may have millions of vertices.
+    const auto name = [&vertices] { return "vertex " + std::to_string(vertices.size()); };
+    if (!entry.is_array() || entry.as_array().size() != 2) {
+      errors.fail(entry,
+                  name() + " must be an array of 2 numbers [x, y], got " + describe_shape(entry));
+    }
+    Vec2 position{};
+    for (std::size_t axis = 0; axis < 2; ++axis) {
+      const JsonValue& coordinate = entry.as_array()[axis];
+      if (!coordinate.is_number()) {
+        errors.fail(coordinate, name() + ": expected a number for " + (axis == 0 ? "x" : "y") +
+                                    ", got " + describe_kind(coordinate.kind()));
+      }
+      position[axis] = coordinate.as_number();
+    }
+    vertices.push_back(position);
+  }
+  return vertices;
+}
+
+std::vector<std::array<std::int64_t, 2>> read_edges(const JsonValue& list,
+                                                    const ShapeErrors& errors) {
+  if (!list.is_array()) {
+    errors.fail(list, std::string("\"edges\" must be an array of [i, j] vertex index pairs, got ") +
+                          describe_kind(list.kind()));
+  }
+  // Doubles in [-2^63, 2^63) convert to int64 exactly when integral; the
+  // upper bound is exclusive because 2^63 itself does not fit.
+  constexpr double kInt64Bound = 9223372036854775808.0;  // 2^63
+  std::vector<std::array<std::int64_t, 2>> edges;
+  edges.reserve(list.as_array().size());
+  for (const JsonValue& entry : list.as_array()) {
+    const auto name = [&edges] { return "edge " + std::to_string(edges.size()); };
+    if (!entry.is_array() || entry.as_array().size() != 2) {
+      errors.fail(entry, name() + " must be an array of 2 vertex indices [i, j], got " +
+                             describe_shape(entry));
+    }
+    std::array<std::int64_t, 2> edge{};
+    for (std::size_t end = 0; end < 2; ++end) {
+      const JsonValue& index = entry.as_array()[end];
+      if (!index.is_number()) {
+        errors.fail(index, name() + ": expected a vertex index (an integer), got " +
+                               describe_kind(index.kind()));
+      }
+      const double value = index.as_number();
+      if (std::floor(value) != value) {
+        errors.fail(index, name() + ": vertex index " + format_json_number(value) +
+                               " is not an integer");
+      }
+      if (value < -kInt64Bound || value >= kInt64Bound) {
+        errors.fail(index, name() + ": vertex index " + format_json_number(value) +
+                               " is outside the 64-bit integer range");
+      }
+      // Range against the vertex count is make_stick_figure's check, so
+      // that files and in-memory arrays get the same message.
+      edge[end] = static_cast<std::int64_t>(value);
+    }
+    edges.push_back(edge);
+  }
+  return edges;
+}
+
+}  // namespace
+
+StickFigure parse_figure(const std::string& text, const std::string& origin) {
+  const ShapeErrors errors(origin);
+  JsonValue document;
+  try {
+    document = parse_json(text);
+  } catch (const JsonError& error) {
+    throw JsonError(errors.prefix() + error.what());
+  }
+  if (!document.is_object()) {
+    errors.fail(document, std::string("a figure file must hold a JSON object with \"vertices\" "
+                                      "and \"edges\", got ") +
+                              describe_kind(document.kind()));
+  }
+  // Members other than these three are ignored, so that later versions can
+  // add fields (colours, per-vertex labels) without breaking older readers.
+  std::vector<Vec2> vertices = read_vertices(require_member(document, "vertices", errors), errors);
+  const auto edges = read_edges(require_member(document, "edges", errors), errors);
+  std::string name;
+  if (const JsonValue* name_value = document.find("name")) {
+    if (!name_value->is_string()) {
+      errors.fail(*name_value, std::string("\"name\" must be a string, got ") +
+                                   describe_kind(name_value->kind()));
+    }
+    name = name_value->as_string();
+  }
+  try {
+    return make_stick_figure(std::move(vertices), edges, std::move(name));
+  } catch (const InvalidFigureError& error) {
+    throw InvalidFigureError(error.defect(), errors.prefix() + error.what(), error.vertices(),
+                             error.edges());
+  }
+}
+
+StickFigure read_figure_file(const std::string& path) {
+  const auto fail = [&path](int error_number) {
+    throw JsonError(path + ": cannot read file: " + std::strerror(error_number));
+  };
+  struct CloseFile {
+    void operator()(std::FILE* file) const { std::fclose(file); }
+  };
+  errno = 0;
+  const std::unique_ptr<std::FILE, CloseFile> file(std::fopen(path.c_str(), "rb"));
+  if (!file) fail(errno != 0 ? errno : EIO);
+  std::string text;
+  char buffer[1 << 16];
+  while (true) {
+    errno = 0;
+    const std::size_t count = std::fread(buffer, 1, sizeof buffer, file.get());
+    text.append(buffer, count);
+    if (text.size() > kMaxFigureFileBytes) {
+      throw JsonError(path + ": cannot read file: larger than " +
+                      std::to_string(kMaxFigureFileBytes >> 20) + " MiB");
+    }
+    if (count < sizeof buffer) {
+      // On Linux fopen succeeds on a directory and fread fails with EISDIR,
+      // which lands here as "Is a directory".
+      if (std::ferror(file.get())) fail(errno != 0 ? errno : EIO);
+      break;
+    }
+  }
+  return parse_figure(text, path);
+}
+
+}  // namespace stickmorph

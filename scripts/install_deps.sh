@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages that building, testing and the demo need.
+#
+# Quiet and quick when everything is present, so every other script can call
+# it first. As root it installs what is missing; otherwise it prints the
+# command to run and fails, rather than prompting for a password.
+set -euo pipefail
+
+packages=(
+  blender         # the add-on and, later, the demo's bake and render
+  cmake
+  g++
+  pybind11-dev
+  libeigen3-dev
+  libcgal-dev
+  catch2
+  python3-dev
+  python3-numpy
+  python3-pytest
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  # dpkg-query also knows packages that were removed but not purged; only
+  # "install ok installed" counts.
+  status=$(dpkg-query -W -f='${Status}' "$package" 2>/dev/null || true)
+  if [[ "$status" != "install ok installed" ]]; then
+    missing+=("$package")
+  fi
+done
+
+if [[ ${#missing[@]} -eq 0 ]]; then
+  exit 0
+fi
+
+echo "install_deps: missing Debian packages: ${missing[*]}"
+if [[ $(id -u) -ne 0 ]]; then
+  echo "install_deps: not root; install them with:" >&2
+  echo "  sudo apt-get update && sudo apt-get install -y --no-install-recommends ${missing[*]}" >&2
+  exit 1
+fi
+
+apt-get update
+DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}" </dev/null
+echo "install_deps: installed ${missing[*]}"

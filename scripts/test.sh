@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Sets up, builds and runs every test: the Catch2 tests of the engine and CLI
+# (through ctest) and the pytest tests of the Python module.
+#
+#   scripts/test.sh           the regular suite
+#   scripts/test.sh --long    also long fuzz and stress modes, for tests that
+#                             read STICKMORPH_LONG=1
+set -euo pipefail
+
+usage() {
+  echo "usage: scripts/test.sh [--long]" >&2
+}
+
+for argument in "$@"; do
+  case "$argument" in
+    --long) export STICKMORPH_LONG=1 ;;
+    -h|--help) usage; exit 0 ;;
+    *) echo "scripts/test.sh: unknown argument: $argument" >&2; usage; exit 2 ;;
+  esac
+done
+
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+section() { printf '\n==== %s ====\n' "$*"; }
+
+section "Dependencies"
+bash scripts/install_deps.sh
+echo "all Debian packages present"
+
+# Debian's Python, the one Blender embeds and the one with python3-numpy;
+# a python3 earlier on PATH (pyenv, venv) would build an unusable module.
+PYTHON=/usr/bin/python3
+
+section "Configure"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE="$PYTHON"
+
+section "Build"
+cmake --build build -j2
+
+section "C++ tests (ctest)"
+ctest --test-dir build --output-on-failure
+
+section "Python tests (pytest)"
+STICKMORPH_BUILD_DIR="$PWD/build" "$PYTHON" -m pytest tests/python -q
+
+section "All tests passed"
