@@ -1,6 +1,7 @@
 // Figure builders shared by the Catch2 tests.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>

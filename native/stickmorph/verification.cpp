@@ -1,0 +1,184 @@
+#include "stickmorph/verification.h"
+
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "stickmorph/exact_predicates.h"
+
+namespace stickmorph {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Unsigned angle at a between directions to b and c, in [0, pi]. Accurate
+// to a few ulps: the differences are exact or correctly rounded.
+double angle_at(const Vec2& a, const Vec2& b, const Vec2& c) {
+  const double ux = b[0] - a[0], uy = b[1] - a[1];
+  const double vx = c[0] - a[0], vy = c[1] - a[1];
+  return std::atan2(std::abs(ux * vy - uy * vx), ux * vx + uy * vy);
+}
+
+// Interior angle of the polygon at corner k, in (0, 2*pi]: the
+// counter-clockwise sweep from the outgoing edge to the incoming edge.
+double corner_angle(const CornerPolygon& polygon, int k) {
+  const int n = polygon.size();
+  const int prev = polygon.corners[(k + n - 1) % n];
+  const int next = polygon.corners[(k + 1) % n];
+  if (prev == next) return 2 * kPi;  // tip of a dangling edge
+  const Vec2& v = polygon.at(k);
+  const Vec2& p = polygon.positions[prev];
+  const Vec2& q = polygon.positions[next];
+  const int turn = orientation(v, q, p);
+  if (turn == 0) return kPi;
+  const double between = angle_at(v, q, p);
+  return turn > 0 ? between : 2 * kPi - between;
+}
+
+struct Checker {
+  const PolygonPair& pair;
+  const CompatibleTriangulation& tri;
+  const std::string& label;
+  int corners;
+  int nodes;
+
+  Vec2 position(int node, bool target) const {
+    if (node < corners) return target ? pair.target_positions[pair.corners[node]]
+                                      : pair.source_positions[pair.corners[node]];
+    return target ? tri.target_steiner[node - corners] : tri.source_steiner[node - corners];
+  }
+
+  std::string node_text(int node) const {
+    if (node < corners)
+      return "corner " + std::to_string(node) + " (vertex " + std::to_string(pair.corners[node]) + ")";
+    return "Steiner vertex " + std::to_string(node - corners);
+  }
+
+  std::string triangle_text(int t) const {
+    const auto& tr = tri.triangles[t];
+    return "triangle " + std::to_string(t) + " (" + node_text(tr[0]) + ", " + node_text(tr[1]) +
+           ", " + node_text(tr[2]) + ")";
+  }
+
+  [[noreturn]] void fail(const std::string& what) const {
+    throw VerificationError(label + ": compatible triangulation is invalid: " + what);
+  }
+
+  // A key that identifies corners of the same vertex: simplicial means no
+  // two edges share the same pair of keys.
+  long key(int node) const { return node < corners ? pair.corners[node] : -1 - long(node); }
+
+  void run() const {
+    if (int(tri.target_steiner.size()) != int(tri.source_steiner.size()))
+      fail("the source has " + std::to_string(tri.source_steiner.size()) +
+           " Steiner vertices and the target " + std::to_string(tri.target_steiner.size()));
+    if (tri.corner_count != corners)
+      fail("it has " + std::to_string(tri.corner_count) + " corners, the polygon " +
+           std::to_string(corners));
+    for (int side = 0; side < 2; ++side)
+      for (const Vec2& p : side ? tri.target_steiner : tri.source_steiner)
+        if (!std::isfinite(p[0]) || !std::isfinite(p[1])) fail("a Steiner vertex is not finite");
+
+    // 1. Every triangle positive in both polygons (exact).
+    for (std::size_t t = 0; t < tri.triangles.size(); ++t) {
+      const auto& tr = tri.triangles[t];
+      for (int node : tr)
+        if (node < 0 || node >= nodes) fail("triangle " + std::to_string(t) + " names node " + std::to_string(node) + ", which does not exist");
+      for (int side = 0; side < 2; ++side) {
+        const int o = orientation(position(tr[0], side), position(tr[1], side), position(tr[2], side));
+        if (o <= 0)
+          fail(triangle_text(int(t)) + " is " + (o == 0 ? "degenerate" : "inverted") + " in the " +
+               (side ? "target" : "source"));
+      }
+    }
+
+    // 2. A triangulated disk bounded by the polygon.
+    std::map<std::pair<int, int>, int> half_edges;
+    for (std::size_t t = 0; t < tri.triangles.size(); ++t)
+      for (int j = 0; j < 3; ++j) {
+        const int a = tri.triangles[t][j], b = tri.triangles[t][(j + 1) % 3];
+        if (!half_edges.emplace(std::make_pair(a, b), int(t)).second)
+          fail("the side from " + node_text(a) + " to " + node_text(b) + " is used by two triangles on the same side");
+      }
+    std::set<std::pair<int, int>> boundary;
+    for (int k = 0; k < corners; ++k) {
+      boundary.emplace(k, (k + 1) % corners);
+      if (!half_edges.count({k, (k + 1) % corners}))
+        fail("the polygon edge from " + node_text(k) + " to " + node_text((k + 1) % corners) + " is not a triangle side");
+    }
+    std::set<std::pair<int, int>> undirected;
+    for (const auto& [edge, t] : half_edges) {
+      const bool has_twin = half_edges.count({edge.second, edge.first}) > 0;
+      if (boundary.count(edge)) {
+        if (has_twin) fail("the polygon edge from " + node_text(edge.first) + " to " + node_text(edge.second) + " has triangles on both sides");
+      } else if (!has_twin) {
+        fail("the side from " + node_text(edge.first) + " to " + node_text(edge.second) + " of " + triangle_text(t) + " borders nothing");
+      }
+      undirected.emplace(std::min(edge.first, edge.second), std::max(edge.first, edge.second));
+    }
+    std::vector<int> used(nodes, 0);
+    for (const auto& tr : tri.triangles)
+      for (int node : tr) used[node] = 1;
+    for (int node = 0; node < nodes; ++node)
+      if (!used[node]) fail(node_text(node) + " is in no triangle");
+    const long euler = long(nodes) - long(undirected.size()) + long(tri.triangles.size());
+    if (euler != 1) fail("it is not a disk (Euler characteristic " + std::to_string(euler) + ")");
+
+    // 3. Angle sums: one full turn around each Steiner vertex, the polygon's
+    // angle at each corner. The alternatives differ by whole turns.
+    for (int side = 0; side < 2; ++side) {
+      std::vector<double> sum(nodes, 0.0);
+      for (const auto& tr : tri.triangles)
+        for (int j = 0; j < 3; ++j)
+          sum[tr[j]] += angle_at(position(tr[j], side), position(tr[(j + 1) % 3], side),
+                                 position(tr[(j + 2) % 3], side));
+      const CornerPolygon polygon = side ? pair.target() : pair.source();
+      for (int node = 0; node < nodes; ++node) {
+        const double expected = node < corners ? corner_angle(polygon, node) : 2 * kPi;
+        if (std::abs(sum[node] - expected) > kPi)
+          fail("the triangles around " + node_text(node) + " turn " +
+               format_double(sum[node] / (2 * kPi)) + " times instead of " +
+               format_double(expected / (2 * kPi)) + " in the " + (side ? "target" : "source") +
+               ": they overlap");
+      }
+    }
+
+    // 4. Simplicial once repeated corners are identified with their vertex.
+    // A figure edge walked on both sides is one edge with a triangle on
+    // each side, so boundary sides may pair up; nothing else may.
+    std::map<std::pair<long, long>, std::pair<int, int>> by_key;
+    for (const auto& [a, b] : undirected) {
+      const long ka = key(a), kb = key(b);
+      if (ka == kb) fail("the side from " + node_text(a) + " to " + node_text(b) + " joins a vertex to itself");
+      const std::pair<long, long> k{std::min(ka, kb), std::max(ka, kb)};
+      auto [it, inserted] = by_key.emplace(k, std::make_pair(a, b));
+      if (!inserted) {
+        const auto [c, d] = it->second;
+        const bool both_boundary = (boundary.count({a, b}) || boundary.count({b, a})) &&
+                                   (boundary.count({c, d}) || boundary.count({d, c}));
+        if (!both_boundary)
+          fail("the sides " + node_text(a) + " - " + node_text(b) + " and " + node_text(c) + " - " +
+               node_text(d) + " join the same two vertices (a doubled edge)");
+      }
+    }
+  }
+};
+
+}  // namespace
+
+void verify_compatible_triangulation(const PolygonPair& pair, const CompatibleTriangulation& tri,
+                                     const std::string& label) {
+  const int corners = int(pair.corners.size());
+  Checker{pair, tri, label, corners, corners + int(tri.source_steiner.size())}.run();
+}
+
+bool is_valid(const PolygonPair& pair, const CompatibleTriangulation& tri) {
+  try {
+    verify_compatible_triangulation(pair, tri);
+    return true;
+  } catch (const VerificationError&) {
+    return false;
+  }
+}
+
+}  // namespace stickmorph
