@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "stickmorph/compatibility.h"
+#include "stickmorph/compatible_triangulation.h"
 #include "stickmorph/decomposition.h"
 #include "stickmorph/errors.h"
 #include "stickmorph/figure_io.h"
@@ -35,6 +36,7 @@ py::handle g_json_error;
 py::handle g_invalid_figure_error;
 py::handle g_invalid_argument_error;
 py::handle g_incompatible_figures_error;
+py::handle g_verification_error;
 py::handle g_internal_error;
 
 py::handle new_exception(py::module_& m, const char* name, py::handle base, const char* doc) {
@@ -153,17 +155,16 @@ std::vector<sm::Vec2> to_vertices(py::handle object, const std::string& name) {
   return vertices;
 }
 
-std::vector<std::array<std::int64_t, 2>> to_edges(py::handle object, const std::string& name) {
-  const py::array array = as_array(object, name);
-  if (!has_pair_shape(array))
-    throw sm::InvalidArgumentError(name + " must have shape (#E, 2), got " + shape_text(array));
-  const py::ssize_t n = array.ndim() == 2 ? array.shape(0) : 0;
-  std::vector<std::array<std::int64_t, 2>> edges(static_cast<std::size_t>(n));
-  // Messages about one row name it the way the engine names edges; a second
-  // edge list (check_compatibility's target_edges) is told apart by a prefix.
-  const std::string row_prefix = name == "edges" ? std::string("edge ") : name + ": edge ";
-  const auto not_int64 = [&](py::ssize_t row, const std::string& value) {
-    return sm::InvalidArgumentError(row_prefix + std::to_string(row) + ": index " + value +
+// Reads `count` integer indices, in C order, from an integer array or from a
+// float array whose values are all exact integers (never rounded or
+// truncated). `element(i)` names flat element i in messages, e.g. "edge 3" or
+// "corner 5"; `name` names the argument when its dtype is wrong.
+template <typename Element>
+std::vector<std::int64_t> to_int64_indices(const py::array& array, py::ssize_t count,
+                                           const std::string& name, const Element& element) {
+  std::vector<std::int64_t> indices(static_cast<std::size_t>(count));
+  const auto not_int64 = [&](py::ssize_t i, const std::string& value) {
+    return sm::InvalidArgumentError(element(i) + ": index " + value +
                                     " does not fit in a 64-bit signed integer");
   };
 
@@ -174,20 +175,18 @@ std::vector<std::array<std::int64_t, 2>> to_edges(py::handle object, const std::
         py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(array);
     if (!values) throw py::error_already_set();
     const std::int64_t* data = values.data();
-    for (py::ssize_t i = 0; i < n; ++i) edges[i] = {data[2 * i], data[2 * i + 1]};
+    for (py::ssize_t i = 0; i < count; ++i) indices[i] = data[i];
   } else if (kind == 'u') {
     // uint64 above INT64_MAX would wrap to a negative index: refuse instead.
     const auto values =
         py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>::ensure(array);
     if (!values) throw py::error_already_set();
     const std::uint64_t* data = values.data();
-    for (py::ssize_t i = 0; i < n; ++i) {
-      for (int k = 0; k < 2; ++k) {
-        const std::uint64_t v = data[2 * i + k];
-        if (v > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
-          throw not_int64(i, std::to_string(v));
-        edges[i][k] = static_cast<std::int64_t>(v);
-      }
+    for (py::ssize_t i = 0; i < count; ++i) {
+      const std::uint64_t v = data[i];
+      if (v > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
+        throw not_int64(i, std::to_string(v));
+      indices[i] = static_cast<std::int64_t>(v);
     }
   } else if (kind == 'f' && array.dtype().itemsize() <= 8) {
     // Float arrays are common (np.loadtxt, JSON through Python): accept them
@@ -201,23 +200,56 @@ std::vector<std::array<std::int64_t, 2>> to_edges(py::handle object, const std::
     // 2^63 is exactly representable; every integral double in [-2^63, 2^63)
     // converts to int64 without loss.
     constexpr double kTwo63 = 9223372036854775808.0;
-    for (py::ssize_t i = 0; i < n; ++i) {
-      for (int k = 0; k < 2; ++k) {
-        const double v = data[2 * i + k];
-        // Python's repr: the shortest text that reads back as the same value.
-        const auto text = [v] { return py::repr(py::float_(v)).cast<std::string>(); };
-        if (!std::isfinite(v) || v != std::floor(v))
-          throw sm::InvalidArgumentError(row_prefix + std::to_string(i) + ": index " + text() +
-                                         " is not an integer");
-        if (v < -kTwo63 || v >= kTwo63) throw not_int64(i, text());
-        edges[i][k] = static_cast<std::int64_t>(v);
-      }
+    for (py::ssize_t i = 0; i < count; ++i) {
+      const double v = data[i];
+      // Python's repr: the shortest text that reads back as the same value.
+      const auto text = [v] { return py::repr(py::float_(v)).cast<std::string>(); };
+      if (!std::isfinite(v) || v != std::floor(v))
+        throw sm::InvalidArgumentError(element(i) + ": index " + text() + " is not an integer");
+      if (v < -kTwo63 || v >= kTwo63) throw not_int64(i, text());
+      indices[i] = static_cast<std::int64_t>(v);
     }
   } else {
     throw sm::InvalidArgumentError(name + " must hold integer vertex indices, got dtype " +
                                    dtype_text(array));
   }
+  return indices;
+}
+
+std::vector<std::array<std::int64_t, 2>> to_edges(py::handle object, const std::string& name) {
+  const py::array array = as_array(object, name);
+  if (!has_pair_shape(array))
+    throw sm::InvalidArgumentError(name + " must have shape (#E, 2), got " + shape_text(array));
+  const py::ssize_t n = array.ndim() == 2 ? array.shape(0) : 0;
+  // Messages about one row name it the way the engine names edges; a second
+  // edge list (check_compatibility's target_edges) is told apart by a prefix.
+  const std::string row_prefix = name == "edges" ? std::string("edge ") : name + ": edge ";
+  const std::vector<std::int64_t> values = to_int64_indices(
+      array, 2 * n, name, [&](py::ssize_t i) { return row_prefix + std::to_string(i / 2); });
+  std::vector<std::array<std::int64_t, 2>> edges(static_cast<std::size_t>(n));
+  for (py::ssize_t i = 0; i < n; ++i) edges[i] = {values[2 * i], values[2 * i + 1]};
   return edges;
+}
+
+// A polygon's corner sequence: a one-dimensional array of vertex indices,
+// each checked against the number of vertices here, because the engine
+// indexes positions by them without checking.
+std::vector<int> to_corners(py::handle object, std::size_t vertex_count) {
+  const py::array array = as_array(object, "corners");
+  if (array.ndim() != 1)
+    throw sm::InvalidArgumentError("corners must have shape (#C,), got " + shape_text(array));
+  const std::vector<std::int64_t> values = to_int64_indices(
+      array, array.shape(0), "corners",
+      [](py::ssize_t k) { return "corner " + std::to_string(k); });
+  std::vector<int> corners(values.size());
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    if (values[k] < 0 || static_cast<std::uint64_t>(values[k]) >= vertex_count)
+      throw sm::InvalidArgumentError("corner " + std::to_string(k) + ": vertex index " +
+                                     std::to_string(values[k]) + " is out of range for " +
+                                     std::to_string(vertex_count) + " vertices");
+    corners[k] = static_cast<int>(values[k]);
+  }
+  return corners;
 }
 
 // Converts and validates one figure. Validation (exact predicates over all
@@ -244,6 +276,42 @@ sm::StickFigure make_named_figure(py::handle vertices, py::handle edges,
   }
 }
 
+// The engine's polygon routines take positions as given; like
+// make_stick_figure, refuse coordinates its floating-point work cannot handle,
+// with the same defects and wording. `role` is "source" or "target", as in
+// the engine's messages about a polygon pair.
+void check_polygon_coordinates(const std::vector<sm::Vec2>& positions, const std::string& role) {
+  const char* axis[2] = {"x", "y"};
+  const std::string prefix = "polygon in the " + role + ": vertex ";
+  for (std::size_t v = 0; v < positions.size(); ++v)
+    for (int c = 0; c < 2; ++c) {
+      const double value = positions[v][c];
+      if (!std::isfinite(value))
+        throw sm::InvalidFigureError(sm::FigureDefect::NonFiniteCoordinate,
+                                     prefix + std::to_string(v) + " has a non-finite coordinate (" +
+                                         axis[c] + " = " + sm::format_double(value) + ")",
+                                     {static_cast<int>(v)});
+      if (std::abs(value) > sm::kMaxCoordinateMagnitude)
+        throw sm::InvalidFigureError(sm::FigureDefect::CoordinateTooLarge,
+                                     prefix + std::to_string(v) + " has coordinate " + axis[c] +
+                                         " = " + sm::format_double(value) +
+                                         ", beyond the supported magnitude " +
+                                         sm::format_double(sm::kMaxCoordinateMagnitude),
+                                     {static_cast<int>(v)});
+    }
+}
+
+py::array_t<double> to_point_array(const std::vector<sm::Vec2>& points) {
+  const auto n = static_cast<py::ssize_t>(points.size());
+  py::array_t<double> array({n, py::ssize_t{2}});
+  auto out = array.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < n; ++i) {
+    out(i, 0) = points[i][0];
+    out(i, 1) = points[i][1];
+  }
+  return array;
+}
+
 void translate_exception(std::exception_ptr pointer) {
   try {
     if (pointer) std::rethrow_exception(pointer);
@@ -262,6 +330,8 @@ void translate_exception(std::exception_ptr pointer) {
     set_error(g_invalid_argument_error, e.what());
   } catch (const sm::IncompatibleFiguresError& e) {
     set_error(g_incompatible_figures_error, e.what());
+  } catch (const sm::VerificationError& e) {
+    set_error(g_verification_error, e.what());
   } catch (const sm::InternalError& e) {
     set_error(g_internal_error, e.what());
   } catch (const sm::Error& e) {
@@ -310,6 +380,10 @@ PYBIND11_MODULE(stickmorph, m) {
   g_incompatible_figures_error = new_exception(
       m, "IncompatibleFiguresError", g_stickmorph_error,
       "Two figures that an operation needs to be compatible are not.");
+  g_verification_error = new_exception(
+      m, "VerificationError", g_stickmorph_error,
+      "A result failed exact verification and could not be repaired, so none is returned; the "
+      "message names the face and the triangle.");
   // Not a StickMorphError: it is never the caller's fault, so code catching
   // ValueError for bad input must not swallow it.
   g_internal_error = new_exception(
@@ -516,4 +590,106 @@ Raises:
   InvalidFigureError: the source or the target is invalid (the message
     starts with "source: " or "target: ").
   InvalidArgumentError: an array of the wrong shape or type.)doc");
+
+  m.def(
+      "compatible_triangulation",
+      [](const py::object& source, const py::object& target, const std::string& steiner,
+         const py::object& corners, int smoothing_rounds) {
+        sm::CompatibleTriangulationOptions options;
+        options.method = sm::parse_steiner_method(steiner);
+        if (smoothing_rounds < 0)
+          throw sm::InvalidArgumentError("smoothing_rounds must be at least 0, got " +
+                                         std::to_string(smoothing_rounds));
+        options.smoothing_rounds = smoothing_rounds;
+
+        sm::PolygonPair pair;
+        pair.source_positions = to_vertices(source, "source");
+        pair.target_positions = to_vertices(target, "target");
+        const std::size_t n = pair.source_positions.size();
+        if (pair.target_positions.size() != n)
+          throw sm::InvalidArgumentError("source and target must have the same number of vertices, "
+                                         "got " + std::to_string(n) + " and " +
+                                         std::to_string(pair.target_positions.size()));
+        if (corners.is_none()) {
+          pair.corners.resize(n);
+          for (std::size_t k = 0; k < n; ++k) pair.corners[k] = static_cast<int>(k);
+        } else {
+          pair.corners = to_corners(corners, n);
+        }
+        check_polygon_coordinates(pair.source_positions, "source");
+        check_polygon_coordinates(pair.target_positions, "target");
+
+        sm::CompatibleTriangulation triangulation;
+        sm::CompatibleTriangulationStats stats;
+        {
+          py::gil_scoped_release release;
+          triangulation = sm::compatible_triangulation(pair, options, &stats);
+        }
+
+        const auto t = static_cast<py::ssize_t>(triangulation.triangles.size());
+        py::array_t<std::int64_t> triangles({t, py::ssize_t{3}});
+        auto w = triangles.mutable_unchecked<2>();
+        for (py::ssize_t i = 0; i < t; ++i)
+          for (py::ssize_t j = 0; j < 3; ++j) w(i, j) = triangulation.triangles[i][j];
+        py::dict statistics;
+        statistics["steiner_vertices"] = stats.steiner_vertices;
+        statistics["spiderweb_steiner_vertices"] = stats.spiderweb_steiner_vertices;
+        statistics["min_angle_before_smoothing"] = stats.min_angle_before_smoothing;
+        statistics["min_angle_after_smoothing"] = stats.min_angle_after_smoothing;
+        py::dict result;
+        result["triangles"] = triangles;
+        result["corners"] = to_int64_array(pair.corners);
+        result["source_steiner"] = to_point_array(triangulation.source_steiner);
+        result["target_steiner"] = to_point_array(triangulation.target_steiner);
+        result["stats"] = statistics;
+        return result;
+      },
+      py::arg("source"), py::arg("target"), py::arg("steiner") = "improved",
+      py::arg("corners") = py::none(), py::arg("smoothing_rounds") = 10,
+      R"doc(Compatibly triangulates two corresponding polygons (paper, section 4).
+
+Both polygons share one corner sequence; corner k sits at source[corners[k]]
+in the source and at target[corners[k]] in the target. The result is one
+triangulation, with Steiner vertices added inside, whose triangles are
+positively oriented in both polygons. It is verified with exact predicates
+before it is returned.
+
+Args:
+  source: #V by 2 float64 array-like, source vertex coordinates.
+  target: #V by 2 float64 array-like, target vertex coordinates (same #V).
+  steiner: how Steiner vertices are placed: "aronov" (the universal
+    spiderweb of Aronov, Seidel & Souvaine), "sg2001" (the reduced spiderweb
+    of Surazhsky & Gotsman 2001) or "improved" (section 4.2: sg2001 without
+    the vertices redundant in both polygons).
+  corners: optional #C integer array-like of vertex indices, the corner
+    sequence counter-clockwise in both polygons; a vertex may repeat (weakly
+    simple polygons, e.g. a face with a dangling edge walked on both sides).
+    Default: 0, 1, ..., #V-1, a simple polygon through every vertex in order.
+  smoothing_rounds: rounds of Laplacian smoothing of the Steiner vertices in
+    each polygon (>= 0); a move is kept only if the triangulation stays valid
+    and its smallest angle does not shrink.
+
+Returns:
+  dict with
+    "triangles"       #T by 3 int64 ndarray of node indices, counter-clockwise
+                      in both polygons: nodes 0..#C-1 are the corners in
+                      order, nodes #C..#C+#S-1 the Steiner vertices
+    "corners"         #C int64 ndarray, the vertex index of each corner
+    "source_steiner"  #S by 2 float64 ndarray, Steiner vertices in the source
+    "target_steiner"  #S by 2 float64 ndarray, Steiner vertices in the target
+    "stats"           dict: "steiner_vertices" (int, #S),
+                      "spiderweb_steiner_vertices" (int, before redundancy
+                      removal), "min_angle_before_smoothing" and
+                      "min_angle_after_smoothing" (float, radians, smallest
+                      triangle angle over both polygons)
+
+Raises:
+  InvalidFigureError: a polygon is not weakly simple and counter-clockwise,
+    or has a non-finite or too large coordinate (the message says "in the
+    source" or "in the target").
+  InvalidArgumentError: an unknown steiner name, an array of the wrong shape
+    or type, source and target of different lengths, a corner index out of
+    range, or a negative smoothing_rounds.
+  VerificationError: no compatible triangulation passing verification was
+    found; the message names the face and the triangle.)doc");
 }
