@@ -1,0 +1,63 @@
+// Compatible triangulation of two stick figures (Algorithm 3, steps 1-3).
+//
+// Surazhsky & Gotsman 2001, section 3, Algorithm 3: decompose both figures
+// (Algorithm 1), compatibly triangulate each pair of interior faces
+// (section 4), enclose both figures in the same convex polygon, cut the
+// annulus between the enclosure and the figure into a (weakly simple)
+// polygon along a path valid in both figures, compatibly triangulate it, and
+// glue everything into one triangulation of the enclosure.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "stickmorph/compatible_triangulation.h"
+#include "stickmorph/stick_figure.h"
+
+namespace stickmorph {
+
+/// One triangulation of the enclosure, embedded in both figures.
+/// Node order (as in ../shared/FORMAT.md): the n figure vertices in input
+/// order, then the k enclosure vertices counter-clockwise, then the s Steiner
+/// vertices. The enclosure is the triangulation's boundary, convex and the
+/// same in both; every figure edge is a triangulation edge.
+struct FigureTriangulation {
+  int figure_vertices = 0;     ///< n
+  int enclosure_vertices = 0;  ///< k
+  int steiner_vertices = 0;    ///< s
+  std::vector<Vec2> source;    ///< (n+k+s) by 2 positions in the source
+  std::vector<Vec2> target;    ///< (n+k+s) by 2 positions in the target
+  std::vector<std::array<int, 3>> triangles;  ///< #T by 3, counter-clockwise in both
+  int node_count() const { return figure_vertices + enclosure_vertices + steiner_vertices; }
+};
+
+struct FigureTriangulationOptions {
+  SteinerMethod method = SteinerMethod::Improved;
+  int enclosure_sides = 6;  ///< a regular hexagon, as in the paper (section 5)
+  int smoothing_rounds = 10;
+};
+
+struct FigureTriangulationStats {
+  int interior_faces = 0;
+  int cut_bends = 0;           ///< Steiner vertices on the annulus cut
+  int interior_steiner = 0;    ///< Steiner vertices inside interior faces
+  double min_angle = 0;        ///< radians, over both embeddings
+};
+
+/// Algorithm 3, steps 1-3, for two compatible figures (vertex i of the
+/// source corresponds to vertex i of the target; edge lists may differ in
+/// order and direction). The result is verified exactly before it is
+/// returned (verify_figure_triangulation).
+/// @throws IncompatibleFiguresError, InvalidArgumentError (enclosure_sides
+///         below 3), VerificationError naming the face.
+FigureTriangulation triangulate_figures(const StickFigure& source, const StickFigure& target,
+                                        const FigureTriangulationOptions& options = {},
+                                        FigureTriangulationStats* stats = nullptr);
+
+/// Exact check of a FigureTriangulation against the source figure's edges:
+/// every triangle positive in both embeddings, a disk bounded by the
+/// enclosure, full turns around every other node, simplicial, and every
+/// figure edge present. Throws VerificationError.
+void verify_figure_triangulation(const FigureTriangulation& triangulation, const StickFigure& source);
+
+}  // namespace stickmorph
