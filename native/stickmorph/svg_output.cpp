@@ -1,0 +1,153 @@
+#include "stickmorph/svg_output.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+namespace stickmorph {
+namespace {
+
+constexpr double kPanel = 320;   // panel size in SVG units
+constexpr double kMargin = 16;
+
+std::string escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '&': out += "&amp;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string number(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.2f", v);
+  return buffer;
+}
+
+// Maps a bounding box uniformly into a panel at (x0, y0), y pointing up.
+struct Frame {
+  double lo[2], scale, x0, y0, width, height;
+  Frame(const std::vector<const std::vector<Vec2>*>& sets, std::size_t count, double px, double py) {
+    lo[0] = lo[1] = std::numeric_limits<double>::infinity();
+    double hi[2] = {-lo[0], -lo[1]};
+    for (const auto* s : sets)
+      for (std::size_t i = 0; i < std::min(count, s->size()); ++i)
+        for (int c = 0; c < 2; ++c) lo[c] = std::min(lo[c], (*s)[i][c]), hi[c] = std::max(hi[c], (*s)[i][c]);
+    width = hi[0] - lo[0];
+    height = hi[1] - lo[1];
+    const double extent = std::max({width, height, 1e-300});
+    scale = (kPanel - 2 * kMargin) / extent;
+    x0 = px + kMargin + 0.5 * (kPanel - 2 * kMargin - width * scale);
+    y0 = py + kMargin + 0.5 * (kPanel - 2 * kMargin + height * scale);
+  }
+  std::string x(const Vec2& p) const { return number(x0 + (p[0] - lo[0]) * scale); }
+  std::string y(const Vec2& p) const { return number(y0 - (p[1] - lo[1]) * scale); }
+};
+
+// A hue per vertex index, so corresponding vertices share a colour.
+std::string vertex_colour(int v, int n) {
+  const double hue = 360.0 * v / std::max(1, n);
+  return "hsl(" + number(hue) + ",80%,45%)";
+}
+
+// Colour between the source (blue) and target (red).
+std::string blend(double t) {
+  const int r = int(std::lround(40 + 180 * t)), g = int(std::lround(90 - 40 * t)), b = int(std::lround(200 - 160 * t));
+  return "rgb(" + std::to_string(r) + "," + std::to_string(g) + "," + std::to_string(b) + ")";
+}
+
+void draw_triangles(std::ostringstream& out, const Frame& f, const std::vector<Vec2>& pos,
+                    const std::vector<std::array<int, 3>>& triangles) {
+  out << "<g stroke=\"#b0b0b0\" stroke-width=\"0.4\" fill=\"none\">\n";
+  for (const auto& t : triangles) {
+    out << "<polygon points=\"";
+    for (int j = 0; j < 3; ++j) out << f.x(pos[t[j]]) << "," << f.y(pos[t[j]]) << (j < 2 ? " " : "");
+    out << "\"/>\n";
+  }
+  out << "</g>\n";
+}
+
+void draw_figure(std::ostringstream& out, const Frame& f, const StickFigure& source, const std::vector<Vec2>& pos,
+                 const std::string& colour, double width, bool vertex_colours) {
+  out << "<g stroke=\"" << colour << "\" stroke-width=\"" << number(width) << "\" stroke-linecap=\"round\">\n";
+  for (const Edge& e : source.edges)
+    out << "<line x1=\"" << f.x(pos[e[0]]) << "\" y1=\"" << f.y(pos[e[0]]) << "\" x2=\"" << f.x(pos[e[1]])
+        << "\" y2=\"" << f.y(pos[e[1]]) << "\"/>\n";
+  out << "</g>\n";
+  const int n = int(source.vertices.size());
+  for (int v = 0; v < n; ++v)
+    out << "<circle cx=\"" << f.x(pos[v]) << "\" cy=\"" << f.y(pos[v]) << "\" r=\"" << number(width * 0.9)
+        << "\" fill=\"" << (vertex_colours ? vertex_colour(v, n) : colour) << "\"/>\n";
+}
+
+std::string header(double width, double height, const std::string& title) {
+  return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + number(width) + "\" height=\"" + number(height) +
+         "\" viewBox=\"0 0 " + number(width) + " " + number(height) + "\">\n<title>" + escape(title) +
+         "</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+}
+
+void caption(std::ostringstream& out, double x, double y, const std::string& text) {
+  out << "<text x=\"" << number(x) << "\" y=\"" << number(y)
+      << "\" font-family=\"sans-serif\" font-size=\"12\" text-anchor=\"middle\">" << escape(text) << "</text>\n";
+}
+
+}  // namespace
+
+std::string triangulation_svg(const FigureTriangulation& tri, const StickFigure& source, const std::string& title) {
+  std::ostringstream out;
+  out << header(2 * kPanel, kPanel + 24, title);
+  const int n = tri.figure_vertices, k = tri.enclosure_vertices;
+  for (int side = 0; side < 2; ++side) {
+    const std::vector<Vec2>& pos = side ? tri.target : tri.source;
+    const Frame f({&pos}, pos.size(), side * kPanel, 0);
+    draw_triangles(out, f, pos, tri.triangles);
+    out << "<polygon fill=\"none\" stroke=\"#404040\" stroke-width=\"1\" points=\"";
+    for (int j = 0; j < k; ++j) out << f.x(pos[n + j]) << "," << f.y(pos[n + j]) << " ";
+    out << "\"/>\n";
+    draw_figure(out, f, source, pos, side ? "#c03020" : "#2050c0", 2.0, true);
+    out << "<g fill=\"black\">\n";
+    for (int v = n + k; v < tri.node_count(); ++v)
+      out << "<circle cx=\"" << f.x(pos[v]) << "\" cy=\"" << f.y(pos[v]) << "\" r=\"1.3\"/>\n";
+    out << "</g>\n";
+    caption(out, side * kPanel + kPanel / 2, kPanel + 16,
+            std::string(side ? "target" : "source") + ": " + std::to_string(tri.steiner_vertices) +
+                " Steiner vertices, " + std::to_string(tri.triangles.size()) + " triangles");
+  }
+  out << "</svg>\n";
+  return out.str();
+}
+
+std::string filmstrip_svg(const StickFigure& source, const std::vector<std::vector<Vec2>>& frames,
+                          const std::vector<double>& times, int snapshots, const FigureTriangulation* tri,
+                          const std::string& title) {
+  const int count = int(frames.size());
+  snapshots = std::max(2, std::min(snapshots, count));
+  std::vector<int> chosen;
+  for (int i = 0; i < snapshots; ++i) chosen.push_back(int(std::lround(double(i) * (count - 1) / (snapshots - 1))));
+  // One scale for every snapshot, so motion and size changes show.
+  const std::size_t n = source.vertices.size();
+  std::vector<const std::vector<Vec2>*> sets;
+  for (int f : chosen) sets.push_back(&frames[f]);
+  std::ostringstream out;
+  out << header(snapshots * kPanel, kPanel + 24, title);
+  for (int i = 0; i < snapshots; ++i) {
+    const int f = chosen[i];
+    const Frame frame(sets, tri ? std::size_t(tri->node_count()) : n, i * kPanel, 0);
+    if (tri) draw_triangles(out, frame, frames[f], tri->triangles);
+    const double t = times[f];
+    draw_figure(out, frame, source, frames[f], blend(t), 2.0, false);
+    caption(out, i * kPanel + kPanel / 2, kPanel + 16, "t = " + number(t));
+  }
+  out << "</svg>\n";
+  return out.str();
+}
+
+}  // namespace stickmorph
