@@ -1,0 +1,140 @@
+// Morphing a compatible triangulation with a fixed convex boundary
+// (Algorithm 3, step 4).
+//
+// Floater & Gotsman, "How to morph tilings injectively", J. Comput. Appl.
+// Math. 101 (1999), the paper's [8], as summarised in Surazhsky & Gotsman
+// 2001, section 2.2: a valid triangulation with a convex boundary is
+// represented by a row-stochastic matrix W of convex-combination weights
+// (every interior node is a positive convex combination of its neighbours,
+// Tutte 1963 / Floater 1997), and its geometry is the fixed point
+// x = W x with the boundary held in place. Morph in matrix space, not in
+// shape space: W(t) = (1 - t) W0 + t W1 is again positive and
+// row-stochastic, so by Tutte's theorem the solution of
+// (I - W_interior(t)) x = W_boundary(t) x_boundary is a valid triangulation
+// with the same connectivity for every t. Step 5 of Algorithm 3 then keeps
+// only the figure's edges, so every frame is a stick figure compatible with
+// the source.
+//
+// Node layout (FigureTriangulation, ../shared/FORMAT.md): n figure vertices,
+// then k enclosure vertices (the fixed boundary), then s Steiner vertices.
+#pragma once
+
+#include <Eigen/SparseCore>
+#include <string>
+#include <vector>
+
+#include "stickmorph/figure_triangulation.h"
+#include "stickmorph/stick_figure.h"
+
+namespace stickmorph {
+
+/// How each interior node is written as a convex combination of its
+/// neighbours. All three reproduce the embedding they are computed from
+/// (sum_j w_ij p_j = p_i), which is what makes frame 0 the source and the
+/// last frame the target.
+enum class WeightKind {
+  /// Mean value coordinates (Floater 2003, "Mean value coordinates"):
+  /// w_ij ~ (tan(a_{j-1}/2) + tan(a_j/2)) / |p_j - p_i|, a_j the angle at
+  /// p_i between p_j and the next neighbour. Positive in a valid
+  /// triangulation, smooth in the positions.
+  MeanValue,
+  /// Tutte's uniform weights 1/deg, made to reproduce the embedding: the
+  /// weights nearest to 1/deg (least squares) among those with
+  /// sum_j w_ij p_j = p_i and unit sum, blended toward mean value
+  /// coordinates just enough to stay positive. Exactly 1/deg at a node that
+  /// is the centroid of its neighbours. (Plain 1/deg does not reproduce the
+  /// source, so [8] cannot use it: frames would jump away from the source.)
+  Uniform,
+  /// Floater's shape-preserving weights (Floater 1997, "Parametrization and
+  /// smooth approximation of surface triangulations", the weights of [8]):
+  /// the average over neighbours l of p_i's barycentric coordinates in the
+  /// triangle (p_l, p_r, p_r+1) that the ray from p_l through p_i exits.
+  Floater,
+};
+
+/// "mvc", "uniform", "floater" -> kind.
+/// @throws InvalidArgumentError naming the accepted names.
+WeightKind parse_weight_kind(const std::string& name);
+std::string weight_kind_name(WeightKind kind);
+
+/// Frames allowed in one morph: every frame stores all node positions.
+constexpr int kMaxMorphFrames = 100000;
+
+struct MorphOptions {
+  int frames = 50;                          ///< N >= 2: t_f = f / (N - 1), f = 0..N-1
+  WeightKind weights = WeightKind::MeanValue;
+  /// Verify every frame exactly (all triangles counter-clockwise, and the
+  /// figure a stick figure compatible with the source) and refine or refuse
+  /// frames that fail.
+  bool verify = true;
+};
+
+/// What the morph measured.
+struct MorphStats {
+  double factorize_ms = 0;  ///< weights, assembly, symbolic and numeric LU
+  double solve_ms = 0;      ///< triangular solves and refinement
+  double verify_ms = 0;     ///< exact per-frame checks
+  int refined_frames = 0;   ///< frames that needed long double refinement
+};
+
+struct MorphResult {
+  std::vector<double> times;               ///< N times, 0 first, 1 last
+  std::vector<std::vector<Vec2>> frames;   ///< frames[f]: positions at times[f]
+  MorphStats stats;
+};
+
+/// Morphs a compatible triangulation by [8], N = options.frames frames.
+///
+/// `triangulation`: nodes as documented on FigureTriangulation; the k
+/// enclosure nodes must sit at the same positions in source and target and
+/// form a strictly convex counter-clockwise polygon that is the
+/// triangulation's boundary; every triangle counter-clockwise in both
+/// embeddings. `source`: the figure on the first n nodes (its positions
+/// equal triangulation.source[0..n)), whose edges define each frame's figure.
+///
+/// frames[f] holds all n+k+s node positions. frames[0] and frames[N-1] are
+/// exactly triangulation.source and triangulation.target.
+///
+/// With options.verify, every returned frame has passed (1) an exact
+/// orientation test of every triangle and (2) verify_frame on its first n
+/// positions; a frame that fails is refined in long double and re-checked.
+/// @throws InvalidArgumentError (frames out of [2, kMaxMorphFrames], a
+///         malformed or invalid triangulation, a source that does not match
+///         it), VerificationError naming the frame index, its time and the
+///         triangle or figure defect when refinement does not repair it.
+MorphResult morph_triangulation(const FigureTriangulation& triangulation, const StickFigure& source,
+                                const MorphOptions& options = {});
+
+/// The weight matrix of one embedding of `triangulation` (positions: its
+/// source or target, node_count() by 2). #nodes by #nodes, row-major; the
+/// row of an interior node (figure or Steiner) holds its weights over its
+/// neighbours, positive and summing to 1; enclosure rows are empty.
+/// @throws InvalidArgumentError as morph_triangulation does for a malformed
+///         triangulation or a triangle that is not counter-clockwise in
+///         `positions`.
+Eigen::SparseMatrix<double, Eigen::RowMajor> barycentric_weights(const FigureTriangulation& triangulation,
+                                                                 const std::vector<Vec2>& positions,
+                                                                 WeightKind kind);
+
+/// The solve of [8] alone at one time t in [0, 1]: all node positions of
+/// (I - W_interior(t)) x = W_boundary(t) x_boundary, without substituting
+/// the exact endpoints and without verification. For tests and diagnostics.
+std::vector<Vec2> solve_morph_frame(const FigureTriangulation& triangulation, double t,
+                                    WeightKind kind = WeightKind::MeanValue);
+
+/// Straight-line interpolation of the n figure vertices: the naive morph of
+/// the paper's section 1 and Figure 8d, the baseline that can self-intersect.
+/// frames[f] holds n positions; frames[0] and frames[N-1] are exactly the
+/// source's and the target's vertices. `source` and `target` need the same
+/// number of vertices; the frames use the source's edges.
+///
+/// @param invalid_frames  if not null, receives the indices of the frames
+///        that are not stick figures compatible with the source
+///        (is_frame_valid), in increasing order; this function does not
+///        fail on them. If null, no frame is checked.
+/// @throws InvalidArgumentError (frames out of [2, kMaxMorphFrames],
+///         vertex counts differ).
+MorphResult linear_morph(const StickFigure& source, const StickFigure& target, int frames,
+                         std::vector<int>* invalid_frames = nullptr);
+
+}  // namespace stickmorph
