@@ -4,6 +4,8 @@
 // the command table and turns every failure into one line on stderr with
 // exit code 2. Adding a command means writing its run function and one
 // table entry; argument checking, --help and error reporting come for free.
+#include <charconv>
+#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -16,6 +18,11 @@
 #include "stickmorph/compatibility.h"
 #include "stickmorph/errors.h"
 #include "stickmorph/figure_io.h"
+#include "stickmorph/figure_triangulation.h"
+#include "stickmorph/json.h"
+#include "stickmorph/morph.h"
+#include "stickmorph/svg_output.h"
+#include "result_json.h"
 
 namespace stickmorph {
 namespace {
@@ -93,6 +100,199 @@ int run_check(const ParsedArguments& arguments) {
   return kExitIncompatible;
 }
 
+// -- option values ----------------------------------------------------------
+
+const std::string* option_value(const ParsedArguments& arguments, std::string_view name) {
+  const auto it = arguments.options.find(name);
+  return it == arguments.options.end() ? nullptr : &it->second;
+}
+
+const std::string& required_option(const ParsedArguments& arguments, std::string_view command,
+                                   std::string_view name) {
+  const std::string* value = option_value(arguments, name);
+  if (value == nullptr)
+    throw InvalidArgumentError(std::string(command) + ": missing option " + std::string(name) + " (see 'stickmorph " +
+                               std::string(command) + " --help')");
+  return *value;
+}
+
+// A whole number option at least `least`, e.g. --frames.
+int integer_option(const ParsedArguments& arguments, std::string_view name, int fallback, int least) {
+  const std::string* text = option_value(arguments, name);
+  if (text == nullptr) return fallback;
+  int value = 0;
+  const char* end = text->data() + text->size();
+  const auto [ptr, error] = std::from_chars(text->data(), end, value);
+  if (error != std::errc() || ptr != end)
+    throw InvalidArgumentError("option " + std::string(name) + " needs a whole number, got " + quoted(*text));
+  if (value < least)
+    throw InvalidArgumentError("option " + std::string(name) + " must be at least " + std::to_string(least) +
+                               ", got " + std::to_string(value));
+  return value;
+}
+
+FigureTriangulationOptions triangulation_options(const ParsedArguments& arguments) {
+  FigureTriangulationOptions options;
+  if (const std::string* name = option_value(arguments, "--steiner")) options.method = parse_steiner_method(*name);
+  options.enclosure_sides = integer_option(arguments, "--enclosure-sides", 6, 3);
+  return options;
+}
+
+int run_triangulate(const ParsedArguments& arguments) {
+  const std::string& output = required_option(arguments, "triangulate", "--output");
+  const StickFigure source = read_figure_file(arguments.positional[0]);
+  const StickFigure target = read_figure_file(arguments.positional[1]);
+  const FigureTriangulationOptions options = triangulation_options(arguments);
+  const FigureTriangulation triangulation = triangulate_figures(source, target, options);
+  JsonWriter out(true);
+  cli::write_triangulation(out, triangulation);
+  cli::write_file_atomically(output, out.finish());
+  if (const std::string* svg = option_value(arguments, "--svg"))
+    cli::write_file_atomically(*svg, triangulation_svg(triangulation, source,
+                                                       "stickmorph triangulate --steiner " +
+                                                           steiner_method_name(options.method)));
+  return kExitSuccess;
+}
+
+double milliseconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// FORMAT.md's morph document. `triangulation` is null for the linear
+// baseline, which uses none.
+std::string morph_document(const StickFigure& source, const std::vector<double>& times,
+                           const std::vector<std::vector<Vec2>>& frames, const FigureTriangulation* triangulation,
+                           double triangulate_ms, double morph_ms, const std::string& method,
+                           const MorphOptions& options, const FigureTriangulationOptions& triangulation_options,
+                           const MorphStats* morph_stats, const std::vector<int>* invalid_frames) {
+  const std::size_t n = source.vertices.size();
+  JsonWriter out(true);
+  out.begin_object();
+  out.key("edges");
+  out.begin_array();
+  for (const Edge& e : source.edges) {
+    out.begin_array();
+    out.value(e[0]);
+    out.value(e[1]);
+    out.end_array();
+  }
+  out.end_array();
+  out.key("times");
+  out.begin_array();
+  for (double t : times) out.value(t);
+  out.end_array();
+  out.key("frames");
+  out.begin_array();
+  for (const auto& frame : frames) {
+    out.begin_array();
+    for (std::size_t v = 0; v < n; ++v) {
+      out.begin_array();
+      out.value(frame[v][0]);
+      out.value(frame[v][1]);
+      out.end_array();
+    }
+    out.end_array();
+  }
+  out.end_array();
+  out.key("triangulation");
+  if (triangulation) cli::write_triangulation(out, *triangulation);
+  else out.null();
+  out.key("stats");
+  out.begin_object();
+  out.key("steiner_vertices");
+  out.value(triangulation ? triangulation->steiner_vertices : 0);
+  out.key("triangles");
+  out.value(triangulation ? int(triangulation->triangles.size()) : 0);
+  out.key("milliseconds");
+  out.begin_object();
+  out.key("triangulate");
+  out.value(triangulate_ms);
+  out.key("morph");
+  out.value(morph_ms);
+  if (morph_stats) {
+    out.key("factorize");
+    out.value(morph_stats->factorize_ms);
+    out.key("solve");
+    out.value(morph_stats->solve_ms);
+    out.key("verify");
+    out.value(morph_stats->verify_ms);
+  }
+  out.end_object();
+  out.key("method");
+  out.value(method);
+  if (triangulation) {
+    out.key("steiner_method");
+    out.value(steiner_method_name(triangulation_options.method));
+    out.key("enclosure_sides");
+    out.value(triangulation_options.enclosure_sides);
+    out.key("weights");
+    out.value(weight_kind_name(options.weights));
+    out.key("verified");
+    out.value(options.verify);
+  }
+  if (morph_stats) {
+    out.key("refined_frames");
+    out.value(morph_stats->refined_frames);
+  }
+  if (invalid_frames) {
+    out.key("invalid_frames");
+    out.begin_array();
+    for (int f : *invalid_frames) out.value(f);
+    out.end_array();
+  }
+  out.end_object();
+  out.end_object();
+  return out.finish();
+}
+
+int run_morph(const ParsedArguments& arguments) {
+  const std::string& output = required_option(arguments, "morph", "--output");
+  MorphOptions options;
+  options.frames = integer_option(arguments, "--frames", 50, 2);
+  if (options.frames > kMaxMorphFrames)
+    throw InvalidArgumentError("option --frames must be at most " + std::to_string(kMaxMorphFrames) + ", got " +
+                               std::to_string(options.frames));
+  if (const std::string* name = option_value(arguments, "--weights")) options.weights = parse_weight_kind(*name);
+  options.verify = option_value(arguments, "--no-verify") == nullptr;
+  const std::string method = option_value(arguments, "--method") ? *option_value(arguments, "--method") : "barycentric";
+  if (method != "barycentric" && method != "linear")
+    throw InvalidArgumentError("unknown morph method '" + method + "' (choose barycentric or linear)");
+  const FigureTriangulationOptions tri_options = triangulation_options(arguments);
+  const StickFigure source = read_figure_file(arguments.positional[0]);
+  const StickFigure target = read_figure_file(arguments.positional[1]);
+  const std::string* svg = option_value(arguments, "--svg");
+  const bool overlay = option_value(arguments, "--svg-triangulation") != nullptr;
+  const std::string title = "stickmorph morph: " + (source.name.empty() ? arguments.positional[0] : source.name) +
+                            " -> " + (target.name.empty() ? arguments.positional[1] : target.name);
+
+  if (method == "linear") {
+    // The paper's Figure 8d baseline: frames that self-intersect are
+    // reported, not refused.
+    require_compatible(source, target);
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<int> invalid;
+    const MorphResult result = linear_morph(source, target, options.frames, &invalid);
+    const double ms = milliseconds_since(start);
+    cli::write_file_atomically(output, morph_document(source, result.times, result.frames, nullptr, 0, ms, method,
+                                                      options, tri_options, nullptr, &invalid));
+    if (svg) cli::write_file_atomically(*svg, filmstrip_svg(source, result.frames, result.times, 7, nullptr, title));
+    return kExitSuccess;
+  }
+  auto start = std::chrono::steady_clock::now();
+  const FigureTriangulation triangulation = triangulate_figures(source, target, tri_options);
+  const double triangulate_ms = milliseconds_since(start);
+  start = std::chrono::steady_clock::now();
+  const MorphResult result = morph_triangulation(triangulation, source, options);
+  const double morph_ms = milliseconds_since(start);
+  cli::write_file_atomically(output, morph_document(source, result.times, result.frames, &triangulation,
+                                                    triangulate_ms, morph_ms, method, options, tri_options,
+                                                    &result.stats, nullptr));
+  if (svg)
+    cli::write_file_atomically(*svg, filmstrip_svg(source, result.frames, result.times, 7,
+                                                   overlay ? &triangulation : nullptr, title));
+  return kExitSuccess;
+}
+
 const std::vector<CommandSpec>& commands() {
   static const std::vector<CommandSpec> table = {
       {"check",
@@ -104,6 +304,40 @@ const std::vector<CommandSpec>& commands() {
        "exterior sequence; Surazhsky & Gotsman 2001, section 2.1). Prints\n"
        "\"compatible\" (exit 0) or \"incompatible: <reason naming vertices>\" (exit 1).",
        &run_check},
+      {"triangulate",
+       {"SOURCE.json", "TARGET.json"},
+       {{"--output", "-o", "OUT.json", "where to write the triangulation object (required)"},
+        {"--steiner", "", "NAME", "compatible triangulation method: improved (default), sg2001 or aronov"},
+        {"--enclosure-sides", "", "K", "sides of the common convex enclosure (default 6, at least 3)"},
+        {"--svg", "", "FILE", "also draw both triangulations side by side"}},
+       "compatibly triangulate two stick figures inside a common enclosure",
+       "Builds the compatible triangulation of the two figures that the morph uses\n"
+       "(Surazhsky & Gotsman 2001, Algorithm 3): every face compatibly triangulated\n"
+       "(section 4), the exterior enclosed by a common convex polygon and cut open.\n"
+       "Writes the \"triangulation\" object of FORMAT.md: figure vertices first, then\n"
+       "the enclosure counter-clockwise, then the Steiner vertices. The result is\n"
+       "verified in exact arithmetic before it is written.",
+       &run_triangulate},
+      {"morph",
+       {"SOURCE.json", "TARGET.json"},
+       {{"--output", "-o", "OUT.json", "where to write the morph (required)"},
+        {"--frames", "", "N", "number of frames, at t = k/(N-1) (default 50, at least 2)"},
+        {"--steiner", "", "NAME", "compatible triangulation method: improved (default), sg2001 or aronov"},
+        {"--weights", "", "KIND", "barycentric weights: mvc (default), uniform or floater"},
+        {"--enclosure-sides", "", "K", "sides of the common convex enclosure (default 6, at least 3)"},
+        {"--method", "", "NAME", "barycentric (default) or linear (straight-line baseline, Fig. 8d)"},
+        {"--no-verify", "", "", "skip the exact check of every frame"},
+        {"--svg", "", "FILE", "also draw a filmstrip of about seven frames"},
+        {"--svg-triangulation", "", "", "draw the triangulation under the filmstrip's figures"}},
+       "morph one stick figure into a compatible one",
+       "Morphs SOURCE into TARGET (Surazhsky & Gotsman 2001, Algorithm 3): both are\n"
+       "embedded in one compatible triangulation of a common convex enclosure, whose\n"
+       "barycentric coordinates are interpolated (Floater & Gotsman 1999). Every frame\n"
+       "is checked in exact arithmetic to be a stick figure with the source's cyclic\n"
+       "sequences unless --no-verify is given; a frame that fails is refined or the\n"
+       "command fails naming it. With --method linear the vertices move on straight\n"
+       "lines and the frames that self-intersect are listed in stats.invalid_frames.",
+       &run_morph},
   };
   return table;
 }
