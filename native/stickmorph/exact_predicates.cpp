@@ -2,6 +2,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
+#include <CGAL/box_intersection_d.h>
 
 namespace stickmorph {
 namespace {
@@ -73,6 +74,38 @@ SegmentContact segment_contact(const Vec2& a, const Vec2& b, const Vec2& c, cons
       o4 == CGAL::COLLINEAR)
     return SegmentContact::Touching;
   return SegmentContact::Crossing;
+}
+
+bool strictly_inside_corner(const Vec2& v, const Vec2& next, const Vec2& prev, bool tip, const Vec2& q) {
+  if (tip) {
+    if (orientation(v, next, q) != 0) return true;
+    return (q[0] - v[0]) * (next[0] - v[0]) + (q[1] - v[1]) * (next[1] - v[1]) < 0;
+  }
+  const int turn = orientation(v, next, prev);
+  if (turn > 0) return orientation(v, next, q) > 0 && orientation(v, q, prev) > 0;
+  // A reflex corner: everything outside the closed convex wedge from prev to next.
+  if (turn < 0) return !(orientation(v, prev, q) >= 0 && orientation(v, q, next) >= 0);
+  return orientation(v, next, q) > 0;  // a straight corner: the left half-plane
+}
+
+std::vector<std::pair<int, int>> overlapping_boxes(const std::vector<Segment>& a, const std::vector<Segment>& b) {
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, int>;
+  auto boxes = [](const std::vector<Segment>& segments) {
+    std::vector<Box> out;
+    out.reserve(segments.size());
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      const Segment& s = segments[i];
+      double lo[2] = {std::min(s[0][0], s[1][0]), std::min(s[0][1], s[1][1])};
+      double hi[2] = {std::max(s[0][0], s[1][0]), std::max(s[0][1], s[1][1])};
+      out.emplace_back(lo, hi, int(i));
+    }
+    return out;
+  };
+  std::vector<Box> boxes_a = boxes(a), boxes_b = boxes(b);
+  std::vector<std::pair<int, int>> pairs;
+  CGAL::box_intersection_d(boxes_a.begin(), boxes_a.end(), boxes_b.begin(), boxes_b.end(),
+                           [&](const Box& x, const Box& y) { pairs.emplace_back(x.info(), y.info()); });
+  return pairs;
 }
 
 int signed_area_sign(const std::vector<Vec2>& corners) {

@@ -6,6 +6,9 @@
 // the given doubles, never subject to rounding.
 #pragma once
 
+#include <utility>
+#include <vector>
+
 #include "stickmorph/stick_figure.h"
 
 namespace stickmorph {
@@ -34,6 +37,21 @@ enum class SegmentContact {
   Overlapping,    ///< collinear with a common sub-segment of positive length
 };
 SegmentContact segment_contact(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d);
+
+/// Is direction q (from v) strictly inside the wedge of a polygon corner at
+/// v, swept counter-clockwise from the edge to `next` to the edge to `prev`
+/// (the region's side)? At the tip of a dangling edge (`next` and `prev`
+/// the same vertex) the wedge is everything but the edge's direction.
+bool strictly_inside_corner(const Vec2& v, const Vec2& next, const Vec2& prev, bool tip, const Vec2& q);
+
+/// A closed segment.
+using Segment = std::array<Vec2, 2>;
+
+/// Index pairs (i, j) such that the bounding boxes of a[i] and b[j] meet
+/// (closed boxes, so touching counts): the candidates that an exact
+/// intersection test must look at. CGAL's box intersection, O((m + n) log
+/// and the number of pairs); boxes of doubles are exact.
+std::vector<std::pair<int, int>> overlapping_boxes(const std::vector<Segment>& a, const std::vector<Segment>& b);
 
 /// Exact sign of the signed area (shoelace sum) of a closed polygon
 /// given by its corner positions, in order: +1 counter-clockwise, -1

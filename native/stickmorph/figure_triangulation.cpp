@@ -53,22 +53,6 @@ std::vector<Vec2> enclosure_polygon(const StickFigure& source, const StickFigure
 // exterior sequence to an enclosure vertex through the unbounded region,
 // valid in both figures.
 
-// Is direction q (from v) strictly inside the wedge of the corner at v
-// between the edges to `next` and `prev` (counter-clockwise from next to
-// prev, the region's side)? `lone` marks a figure with no edges.
-bool inside_wedge(const Vec2& v, const Vec2& next, const Vec2& prev, bool tip, bool lone, const Vec2& q) {
-  if (lone) return true;
-  if (tip) {
-    // Everything except the direction of the single edge.
-    if (orientation(v, next, q) != 0) return true;
-    return (q[0] - v[0]) * (next[0] - v[0]) + (q[1] - v[1]) * (next[1] - v[1]) < 0;
-  }
-  const int turn = orientation(v, next, prev);
-  if (turn > 0) return orientation(v, next, q) > 0 && orientation(v, q, prev) > 0;
-  if (turn < 0) return !(orientation(v, prev, q) >= 0 && orientation(v, q, next) >= 0);
-  return orientation(v, next, q) > 0;  // a straight corner: the left half-plane
-}
-
 struct ExteriorCorner {
   int index = -1;   // position in the exterior sequence
   int vertex = -1;
@@ -90,8 +74,8 @@ ExteriorCorner exterior_corner(const StickFigure& f, const Decomposition& d, int
 bool corner_admits(const StickFigure& f, const ExteriorCorner& c, const Vec2& q) {
   const bool lone = c.next < 0;
   const Vec2& v = f.vertices[c.vertex];
-  return inside_wedge(v, lone ? v : f.vertices[c.next], lone ? v : f.vertices[c.prev], !lone && c.next == c.prev,
-                      lone, q);
+  if (lone) return true;  // a figure of one vertex: every direction is free
+  return strictly_inside_corner(v, f.vertices[c.next], f.vertices[c.prev], c.next == c.prev, q);
 }
 
 // Does the open segment from figure vertex v to q avoid the whole figure?
