@@ -746,21 +746,26 @@ double min_angle(const PolygonPair& pair, const CompatibleTriangulation& tri) {
   return m;
 }
 
-CompatibleTriangulation compatible_triangulation(const PolygonPair& pair,
-                                                 const CompatibleTriangulationOptions& options,
-                                                 CompatibleTriangulationStats* stats) {
+namespace {
+
+std::vector<std::array<int, 3>> triangulate_checked(const CornerPolygon& polygon, const std::string& label,
+                                                    bool target) {
+  try {
+    return triangulate_polygon(polygon);
+  } catch (const InvalidFigureError& e) {
+    throw InvalidFigureError(e.defect(), label + " in the " + (target ? "target" : "source") + ": " + e.what(),
+                             e.vertices(), e.edges());
+  }
+}
+
+// Section 4.1 (and for Improved, 4.2) on one polygon pair: the spiderweb
+// embedded in both, with redundant vertices removed for Improved.
+Mesh spiderweb_piece(const PolygonPair& pair, const std::vector<std::array<int, 3>>& source_base,
+                     const std::vector<std::array<int, 3>>& target_base, const CompatibleTriangulationOptions& options,
+                     int& spiderweb_steiner) {
   const int n = int(pair.corners.size());
   const CornerPolygon polygons[2] = {pair.source(), pair.target()};
-  std::vector<std::array<int, 3>> base[2];
-  for (int s = 0; s < 2; ++s) {
-    try {
-      base[s] = triangulate_polygon(polygons[s]);
-    } catch (const InvalidFigureError& e) {
-      throw InvalidFigureError(e.defect(), options.label + " in the " + (s ? "target" : "source") + ": " + e.what(),
-                               e.vertices(), e.edges());
-    }
-  }
-
+  const std::vector<std::array<int, 3>>* base[2] = {&source_base, &target_base};
   // Choose each polygon's center (one of at most two) to minimise the total
   // common depth: the paper's maximum of the two milestones per corner.
   std::array<PolygonTriangulation, 2> pts;
@@ -768,8 +773,8 @@ CompatibleTriangulation compatible_triangulation(const PolygonPair& pair,
   long best_total = std::numeric_limits<long>::max();
   for (int cs = 0; cs < 2; ++cs)
     for (int ct = 0; ct < 2; ++ct) {
-      std::array<PolygonTriangulation, 2> candidate = {dual_tree_depths(polygons[0], base[0], cs),
-                                                       dual_tree_depths(polygons[1], base[1], ct)};
+      std::array<PolygonTriangulation, 2> candidate = {dual_tree_depths(polygons[0], *base[0], cs),
+                                                       dual_tree_depths(polygons[1], *base[1], ct)};
       if ((cs && candidate[0].center_faces.size() < 2) || (ct && candidate[1].center_faces.size() < 2)) continue;
       std::vector<int> common(n);
       for (int k = 0; k < n; ++k) common[k] = std::max(candidate[0].milestone[k], candidate[1].milestone[k]);
@@ -794,17 +799,187 @@ CompatibleTriangulation compatible_triangulation(const PolygonPair& pair,
     throw VerificationError(options.label + ": no valid embedding of the spiderweb was found in both polygons (" +
                             std::to_string(n) + " corners, method " + steiner_method_name(options.method) +
                             "): " + placement.failure);
-
   Mesh mesh;
   mesh.corners = n;
   mesh.source = placement.source;
   mesh.target = placement.target;
   mesh.triangles = placement.triangles;
   mesh.alive.assign(mesh.triangles.size(), 1);
+  spiderweb_steiner += int(mesh.source.size()) - n;
+  if (options.method == SteinerMethod::Improved) remove_redundant_steiner(pair, mesh);
+  return mesh;
+}
+
+// Beyond the paper: the diagonals of the source's triangulation that are
+// also diagonals of the target (inside it, meeting its boundary only at
+// their ends). Whether two diagonals cross depends only on the cyclic order
+// of their ends, which both polygons share, so any set of them cuts both
+// polygons into the same pieces; the spiderweb is then needed only where
+// the polygons differ, which keeps its quadratic size local.
+std::set<std::pair<int, int>> common_diagonals(const PolygonPair& pair, const std::vector<std::array<int, 3>>& source_base) {
+  const int n = int(pair.corners.size());
+  const CornerPolygon target = pair.target();
+  std::vector<std::pair<int, int>> candidates;
+  std::set<std::pair<int, int>> seen;
+  for (const auto& t : source_base)
+    for (int j = 0; j < 3; ++j) {
+      const int a = t[j], b = t[(j + 1) % 3];
+      if ((a + 1) % n == b || (b + 1) % n == a) continue;  // a polygon edge
+      if (seen.emplace(std::min(a, b), std::max(a, b)).second) candidates.push_back({std::min(a, b), std::max(a, b)});
+    }
+  std::set<std::pair<int, int>> common;
+  if (candidates.empty()) return common;
+  // In the target: leaves each end into that corner's wedge ...
+  auto enters = [&](int from, int to) {
+    const int prev = pair.corners[(from + n - 1) % n], next = pair.corners[(from + 1) % n];
+    return strictly_inside_corner(target.at(from), target.positions[next], target.positions[prev], prev == next,
+                                  target.at(to));
+  };
+  std::vector<Segment> diagonals, edges;
+  std::vector<char> ok(candidates.size(), 0);
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const auto [a, b] = candidates[i];
+    ok[i] = target.corners[a] != target.corners[b] && enters(a, b) && enters(b, a);
+    diagonals.push_back({target.at(a), target.at(b)});
+  }
+  for (int k = 0; k < n; ++k) edges.push_back({target.at(k), target.at((k + 1) % n)});
+  // ... and meets no edge of the target except at its own ends.
+  for (const auto& [i, e] : overlapping_boxes(diagonals, edges)) {
+    if (!ok[i]) continue;
+    const auto [a, b] = candidates[i];
+    const int va = pair.corners[a], vb = pair.corners[b];
+    const int ea = pair.corners[e], eb = pair.corners[(e + 1) % n];
+    const SegmentContact contact = segment_contact(diagonals[i][0], diagonals[i][1], edges[e][0], edges[e][1]);
+    if (contact == SegmentContact::Disjoint) continue;
+    const bool shares_end = ea == va || ea == vb || eb == va || eb == vb;
+    if (contact == SegmentContact::Touching && shares_end) continue;
+    ok[i] = 0;
+  }
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    if (ok[i]) common.insert(candidates[i]);
+  return common;
+}
+
+// The pieces of the polygon cut along `cuts` (diagonals of `triangles`), each
+// as its corners in counter-clockwise order.
+std::vector<std::vector<int>> pieces_of(const std::vector<std::array<int, 3>>& triangles,
+                                        const std::set<std::pair<int, int>>& cuts) {
+  std::map<std::pair<int, int>, int> owner;  // directed side -> triangle
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    for (int j = 0; j < 3; ++j) owner[{triangles[t][j], triangles[t][(j + 1) % 3]}] = int(t);
+  auto is_cut = [&](int a, int b) { return cuts.count({std::min(a, b), std::max(a, b)}) > 0; };
+  // Components of triangles joined across uncut diagonals.
+  std::vector<int> component(triangles.size(), -1);
+  int count = 0;
+  for (std::size_t start = 0; start < triangles.size(); ++start) {
+    if (component[start] >= 0) continue;
+    std::vector<int> stack{int(start)};
+    component[start] = count;
+    while (!stack.empty()) {
+      const int t = stack.back();
+      stack.pop_back();
+      for (int j = 0; j < 3; ++j) {
+        const int a = triangles[t][j], b = triangles[t][(j + 1) % 3];
+        if (is_cut(a, b)) continue;
+        auto it = owner.find({b, a});
+        if (it != owner.end() && component[it->second] < 0) {
+          component[it->second] = count;
+          stack.push_back(it->second);
+        }
+      }
+    }
+    ++count;
+  }
+  // Each component's boundary: sides without a twin in the same component.
+  std::vector<std::map<int, int>> next(count);  // corner -> next corner along the boundary
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    for (int j = 0; j < 3; ++j) {
+      const int a = triangles[t][j], b = triangles[t][(j + 1) % 3];
+      auto twin = owner.find({b, a});
+      if (twin == owner.end() || component[twin->second] != component[t]) next[component[t]][a] = b;
+    }
+  std::vector<std::vector<int>> pieces;
+  for (int c = 0; c < count; ++c) {
+    std::vector<int> cycle;
+    int corner = std::min_element(next[c].begin(), next[c].end())->first;
+    do {
+      cycle.push_back(corner);
+      corner = next[c].at(corner);
+    } while (corner != cycle.front() && cycle.size() <= next[c].size());
+    if (cycle.size() != next[c].size())
+      throw InternalError("compatible triangulation: a piece's boundary is not one cycle");
+    pieces.push_back(std::move(cycle));
+  }
+  return pieces;
+}
+
+Mesh improved_mesh(const PolygonPair& pair, const std::vector<std::array<int, 3>>& source_base,
+                   const std::vector<std::array<int, 3>>& target_base, const CompatibleTriangulationOptions& options,
+                   int& spiderweb_steiner) {
+  const int n = int(pair.corners.size());
+  Mesh mesh;
+  mesh.corners = n;
+  for (int k = 0; k < n; ++k) {
+    mesh.source.push_back(pair.source_positions[pair.corners[k]]);
+    mesh.target.push_back(pair.target_positions[pair.corners[k]]);
+  }
+  if (n == 3) {  // a triangle in both (both counter-clockwise): nothing to add
+    mesh.triangles.push_back({0, 1, 2});
+    mesh.alive.assign(1, 1);
+    return mesh;
+  }
+  const std::set<std::pair<int, int>> cuts = common_diagonals(pair, source_base);
+  if (cuts.empty()) {
+    Mesh piece = spiderweb_piece(pair, source_base, target_base, options, spiderweb_steiner);
+    return piece;
+  }
+  for (const std::vector<int>& cycle : pieces_of(source_base, cuts)) {
+    PolygonPair sub;
+    for (int k : cycle) sub.corners.push_back(pair.corners[k]);
+    sub.source_positions = pair.source_positions;
+    sub.target_positions = pair.target_positions;
+    const int m = int(cycle.size());
+    Mesh piece;
+    if (m == 3) {
+      piece.corners = 3;
+      piece.triangles.push_back({0, 1, 2});
+    } else {
+      piece = improved_mesh(sub, triangulate_checked(sub.source(), options.label, false),
+                            triangulate_checked(sub.target(), options.label, true), options, spiderweb_steiner);
+    }
+    // Corners of the piece are corners of the pair; its Steiner vertices are new.
+    const int offset = int(mesh.source.size());
+    for (std::size_t v = piece.corners; v < piece.source.size(); ++v) {
+      mesh.source.push_back(piece.source[v]);
+      mesh.target.push_back(piece.target[v]);
+    }
+    for (std::size_t t = 0; t < piece.triangles.size(); ++t) {
+      if (!piece.alive.empty() && !piece.alive[t]) continue;
+      Triangle global;
+      for (int j = 0; j < 3; ++j) {
+        const int v = piece.triangles[t][j];
+        global[j] = v < m ? cycle[v] : offset + (v - m);
+      }
+      mesh.triangles.push_back(global);
+    }
+  }
+  mesh.alive.assign(mesh.triangles.size(), 1);
+  return mesh;
+}
+
+}  // namespace
+
+CompatibleTriangulation compatible_triangulation(const PolygonPair& pair,
+                                                 const CompatibleTriangulationOptions& options,
+                                                 CompatibleTriangulationStats* stats) {
+  const int n = int(pair.corners.size());
+  const std::vector<std::array<int, 3>> source_base = triangulate_checked(pair.source(), options.label, false);
+  const std::vector<std::array<int, 3>> target_base = triangulate_checked(pair.target(), options.label, true);
 
   CompatibleTriangulationStats local;
-  local.spiderweb_steiner_vertices = int(mesh.source.size()) - n;
-  if (options.method == SteinerMethod::Improved) remove_redundant_steiner(pair, mesh);
+  Mesh mesh = options.method == SteinerMethod::Improved
+                  ? improved_mesh(pair, source_base, target_base, options, local.spiderweb_steiner_vertices)
+                  : spiderweb_piece(pair, source_base, target_base, options, local.spiderweb_steiner_vertices);
   local.min_angle_before_smoothing = mesh_min_angle(mesh);
   smooth(mesh, false, options.smoothing_rounds);
   smooth(mesh, true, options.smoothing_rounds);
@@ -814,7 +989,8 @@ CompatibleTriangulation compatible_triangulation(const PolygonPair& pair,
   result.corner_count = n;
   result.source_steiner.assign(mesh.source.begin() + n, mesh.source.end());
   result.target_steiner.assign(mesh.target.begin() + n, mesh.target.end());
-  result.triangles = mesh.triangles;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    if (mesh.alive.empty() || mesh.alive[t]) result.triangles.push_back(mesh.triangles[t]);
   verify_compatible_triangulation(pair, result, options.label);
   local.steiner_vertices = result.steiner_count();
   if (stats) *stats = local;
