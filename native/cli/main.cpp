@@ -233,6 +233,10 @@ std::string morph_document(const StickFigure& source, const std::vector<double>&
   if (morph_stats) {
     out.key("refined_frames");
     out.value(morph_stats->refined_frames);
+    out.key("solver");
+    out.value(morph_stats->solver);
+    out.key("direct_frames");
+    out.value(morph_stats->direct_frames);
   }
   if (invalid_frames) {
     out.key("invalid_frames");

@@ -1,6 +1,7 @@
 #include "stickmorph/morph.h"
 
 #include <Eigen/Dense>
+#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseLU>
 
 #include <algorithm>
@@ -368,12 +369,15 @@ std::vector<double> node_weights(const FigureTriangulation& tri, const Topology&
 ///       8065   37 ms                47 ms           27 ms,    err 3e-10    53 ms
 /// (BiCGSTAB with IncompleteLUT was slower than both LU variants; AMD and
 /// natural orderings gave 1.1-4 times the fill of COLAMD and up to 11 times
-/// the time.) The warm-started iteration is faster by 1.4-3.5 times, but
-/// the exact per-frame checks cost more than either solver, the iteration's
-/// error grows with size while the direct solve's stays near 1e-14 (what
-/// long double refinement moves it by at 481 unknowns), and the direct
-/// factorization is what that refinement reuses. So: SparseLU,
-/// analyzePattern once, factorize per frame.
+/// the time.) On those webs the warm-started iteration is the faster by
+/// 1.4-3.5 times; on the long thin triangulations around polylines and trees
+/// it converges slowly and is up to 7 times slower than the factorization
+/// (benchmark_morph). So each morph measures both on its first interior
+/// frame and keeps the faster for the rest. An iterative result is never
+/// trusted on its own: every frame is verified exactly, and a frame whose
+/// iteration stalls or whose result fails verification is solved again with
+/// the direct factorization (pattern analysed once), which the long double
+/// refinement then reuses.
 class MorphSystem {
  public:
   MorphSystem(const FigureTriangulation& tri, WeightKind kind) : tri_(tri), topo_(build_topology(tri)) {
@@ -430,6 +434,33 @@ class MorphSystem {
     return lu_.info() == Eigen::Success;
   }
 
+  /// Solves the system blended to time t by BiCGSTAB with a diagonal
+  /// preconditioner, warm-started from `guess`. False if it does not reach
+  /// the tolerance; the caller then uses the direct factorization.
+  bool iterate(double t, const Eigen::MatrixX2d& guess, Eigen::MatrixX2d& x) {
+    t_ = t;
+    const double* v0 = a0_.valuePtr();
+    const double* v1 = a1_.valuePtr();
+    double* v = a_.valuePtr();
+    for (Eigen::Index e = 0; e < a_.nonZeros(); ++e) v[e] = (1 - t) * v0[e] + t * v1[e];
+    iterative_.setTolerance(1e-13);
+    iterative_.setMaxIterations(std::max(100, 4 * unknowns()));
+    iterative_.compute(a_);
+    const Eigen::MatrixX2d b = rhs().cast<double>();
+    x = iterative_.solveWithGuess(b, guess);
+    return iterative_.info() == Eigen::Success && x.allFinite();
+  }
+
+  /// Interior coordinates in the source embedding: the first warm start.
+  Eigen::MatrixX2d source_coordinates() const {
+    Eigen::MatrixX2d x(unknowns(), 2);
+    for (int row = 0; row < unknowns(); ++row) {
+      x(row, 0) = tri_.source[topo_.interior_nodes[row]][0];
+      x(row, 1) = tri_.source[topo_.interior_nodes[row]][1];
+    }
+    return x;
+  }
+
   /// Solves the factorized system; x holds the interior coordinates.
   Eigen::MatrixX2d solve() const {
     const Eigen::MatrixX2d b = rhs().cast<double>();
@@ -478,6 +509,7 @@ class MorphSystem {
   LongVector b0_, b1_;
   double t_ = 0;
   Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
+  Eigen::BiCGSTAB<SparseMatrix, Eigen::DiagonalPreconditioner<double>> iterative_;
 };
 
 void require_source_matches(const FigureTriangulation& tri, const StickFigure& source) {
@@ -568,10 +600,24 @@ MorphResult morph_triangulation(const FigureTriangulation& triangulation, const 
   constexpr int kRefinementRounds = 3;
   const int last = options.frames - 1;
   result.frames.reserve(options.frames);
+  Eigen::MatrixX2d guess = system.source_coordinates();
+  Eigen::MatrixX2d x;
+  bool direct = false;
+  bool use_iteration = false;
+  // The direct factorization of frame f's system, into x.
+  auto solve_directly = [&](int f, double t) {
+    auto begin = Clock::now();
+    if (!system.factorize(t)) throw VerificationError(frame_label(f, t) + ": the morph's linear system is singular");
+    result.stats.factorize_ms += ms_since(begin);
+    begin = Clock::now();
+    x = system.solve();
+    result.stats.solve_ms += ms_since(begin);
+    direct = true;
+  };
   for (int f = 0; f <= last; ++f) {
     const double t = result.times[f];
     std::vector<Vec2> positions;
-    Eigen::MatrixX2d x;
+    direct = false;
     if (f == 0 || f == last) {
       // The endpoints are the inputs themselves. The solve reproduces them
       // only up to rounding amplified by the condition number of
@@ -579,20 +625,45 @@ MorphResult morph_triangulation(const FigureTriangulation& triangulation, const 
       // arithmetic), while the contract (FORMAT.md) promises frames[0] is
       // the source and the last frame the target, bit for bit.
       positions = f == 0 ? triangulation.source : triangulation.target;
-    } else {
+    } else if (f == 1) {
+      // Measure both solvers on this frame; keep the direct result.
       start = Clock::now();
-      if (!system.factorize(t))
-        throw VerificationError(frame_label(f, t) + ": the morph's linear system is singular");
-      result.stats.factorize_ms += ms_since(start);
+      Eigen::MatrixX2d iterated;
+      const bool converged = system.iterate(t, guess, iterated);
+      const double iterative_ms = ms_since(start);
+      result.stats.solve_ms += iterative_ms;
       start = Clock::now();
-      x = system.solve();
+      solve_directly(f, t);
+      use_iteration = converged && iterative_ms < ms_since(start);
+      result.stats.solver = use_iteration ? "bicgstab" : "sparse_lu";
       positions = system.positions(x);
-      result.stats.solve_ms += ms_since(start);
+      guess = x;
+    } else {
+      direct = !use_iteration;
+      if (use_iteration) {
+        start = Clock::now();
+        direct = !system.iterate(t, guess, x);
+        result.stats.solve_ms += ms_since(start);
+        if (direct) ++result.stats.direct_frames;  // the iteration stalled
+      }
+      if (direct) solve_directly(f, t);
+      positions = system.positions(x);
+      guess = x;
     }
     if (options.verify) {
       start = Clock::now();
       std::string defect = frame_defect(triangulation, source, source_decomposition, positions, f, t);
       result.stats.verify_ms += ms_since(start);
+      if (!defect.empty() && f != 0 && f != last && !direct) {
+        // The iteration's residual can flip a nearly flat triangle: solve
+        // this frame directly.
+        solve_directly(f, t);
+        ++result.stats.direct_frames;
+        positions = system.positions(x);
+        start = Clock::now();
+        defect = frame_defect(triangulation, source, source_decomposition, positions, f, t);
+        result.stats.verify_ms += ms_since(start);
+      }
       if (!defect.empty() && f != 0 && f != last) {
         // Rounding in the solve can flip a nearly flat triangle that is
         // positive in exact arithmetic (the theorem of [8] holds exactly).

@@ -71,10 +71,16 @@ struct MorphOptions {
 
 /// What the morph measured.
 struct MorphStats {
-  double factorize_ms = 0;  ///< weights, assembly, symbolic and numeric LU
-  double solve_ms = 0;      ///< triangular solves and refinement
+  double factorize_ms = 0;  ///< weights, assembly, symbolic analysis, and any numeric LU
+  double solve_ms = 0;      ///< iterative solves, triangular solves and refinement
   double verify_ms = 0;     ///< exact per-frame checks
   int refined_frames = 0;   ///< frames that needed long double refinement
+  /// Solver kept after measuring both on the first interior frame:
+  /// "bicgstab" (warm-started) or "sparse_lu" (pattern analysed once).
+  std::string solver = "sparse_lu";
+  /// With "bicgstab": frames solved directly after all (the iteration
+  /// stalled, or its frame failed the exact check).
+  int direct_frames = 0;
 };
 
 struct MorphResult {
