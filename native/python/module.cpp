@@ -7,6 +7,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -19,6 +20,8 @@
 #include "stickmorph/decomposition.h"
 #include "stickmorph/errors.h"
 #include "stickmorph/figure_io.h"
+#include "stickmorph/figure_triangulation.h"
+#include "stickmorph/morph.h"
 #include "stickmorph/stick_figure.h"
 
 namespace py = pybind11;
@@ -308,6 +311,121 @@ py::array_t<double> to_point_array(const std::vector<sm::Vec2>& points) {
   for (py::ssize_t i = 0; i < n; ++i) {
     out(i, 0) = points[i][0];
     out(i, 1) = points[i][1];
+  }
+  return array;
+}
+
+// An integer argument such as frames or enclosure_sides, as a Python int of
+// any size (so 10**12 is reported as out of range, not as a TypeError), or
+// anything with __index__ (NumPy integers). Booleans and floats are refused:
+// frames=True or frames=7.5 is a mistake, not a count.
+long long to_count(const py::object& object, const std::string& name) {
+  if (PyBool_Check(object.ptr()) || !PyIndex_Check(object.ptr()))
+    throw sm::InvalidArgumentError(name + " must be an integer, got " +
+                                   py::str(py::type::of(object).attr("__name__")).cast<std::string>());
+  const auto value = py::reinterpret_steal<py::object>(PyNumber_Index(object.ptr()));
+  if (!value) throw py::error_already_set();
+  int overflow = 0;
+  const long long result = PyLong_AsLongLongAndOverflow(value.ptr(), &overflow);
+  if (result == -1 && PyErr_Occurred()) throw py::error_already_set();
+  if (overflow > 0) return std::numeric_limits<long long>::max();
+  if (overflow < 0) return std::numeric_limits<long long>::min();
+  return result;
+}
+
+// The frame count, checked before any work with the engine's own wording
+// (morph_triangulation checks it too, but only after triangulating).
+int to_frame_count(const py::object& object) {
+  const long long frames = to_count(object, "frames");
+  if (frames < 2 || frames > sm::kMaxMorphFrames)
+    throw sm::InvalidArgumentError("the number of frames must be between 2 and " +
+                                   std::to_string(sm::kMaxMorphFrames) + ", got " +
+                                   py::str(object).cast<std::string>());
+  return static_cast<int>(frames);
+}
+
+// Steiner method and enclosure, as the CLI's --steiner and --enclosure-sides.
+// Checked here, not only in triangulate_figures, so that the linear morph
+// (which triangulates nothing) refuses the same bad arguments.
+sm::FigureTriangulationOptions to_triangulation_options(const std::string& steiner,
+                                                        const py::object& enclosure_sides) {
+  sm::FigureTriangulationOptions options;
+  options.method = sm::parse_steiner_method(steiner);
+  const long long sides = to_count(enclosure_sides, "enclosure_sides");
+  if (sides < 3)
+    throw sm::InvalidArgumentError("the enclosure needs at least 3 sides, got " +
+                                   py::str(enclosure_sides).cast<std::string>());
+  if (sides > std::numeric_limits<int>::max())
+    throw sm::InvalidArgumentError("the enclosure can have at most " +
+                                   std::to_string(std::numeric_limits<int>::max()) + " sides, got " +
+                                   py::str(enclosure_sides).cast<std::string>());
+  options.enclosure_sides = static_cast<int>(sides);
+  return options;
+}
+
+// The source and target figures of a pair, validated source first; a defect
+// message starts with "source: " or "target: " (make_named_figure).
+std::pair<sm::StickFigure, sm::StickFigure> make_figure_pair(const py::object& source_vertices,
+                                                             const py::object& target_vertices,
+                                                             const py::object& edges,
+                                                             const py::object& target_edges,
+                                                             const std::string& source_name,
+                                                             const std::string& target_name) {
+  sm::StickFigure source = make_named_figure(source_vertices, edges, source_name, "edges", "source");
+  sm::StickFigure target =
+      target_edges.is_none()
+          ? make_named_figure(target_vertices, edges, target_name, "edges", "target")
+          : make_named_figure(target_vertices, target_edges, target_name, "target_edges", "target");
+  return {std::move(source), std::move(target)};
+}
+
+// The FigureTriangulation as the dict documented on triangulate_figures
+// (FORMAT.md's triangulation object plus the triangulation's statistics).
+py::dict triangulation_dict(const sm::FigureTriangulation& triangulation,
+                            const sm::FigureTriangulationStats& stats) {
+  const auto t = static_cast<py::ssize_t>(triangulation.triangles.size());
+  py::array_t<std::int64_t> triangles({t, py::ssize_t{3}});
+  auto w = triangles.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < t; ++i)
+    for (py::ssize_t j = 0; j < 3; ++j) w(i, j) = triangulation.triangles[i][j];
+  py::dict statistics;
+  statistics["interior_faces"] = stats.interior_faces;
+  statistics["cut_bends"] = stats.cut_bends;
+  statistics["interior_steiner"] = stats.interior_steiner;
+  statistics["min_angle"] = stats.min_angle;
+  py::dict result;
+  result["figure_vertices"] = triangulation.figure_vertices;
+  result["enclosure_vertices"] = triangulation.enclosure_vertices;
+  result["steiner_vertices"] = triangulation.steiner_vertices;
+  result["source"] = to_point_array(triangulation.source);
+  result["target"] = to_point_array(triangulation.target);
+  result["triangles"] = triangles;
+  result["stats"] = statistics;
+  return result;
+}
+
+double milliseconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The first n positions of every frame as one (N, n, 2) float64 array: the
+// barycentric morph's frames hold all triangulation nodes, the figure's
+// vertices first.
+py::array_t<double> figure_frames(const std::vector<std::vector<sm::Vec2>>& frames, std::size_t n) {
+  const auto count = static_cast<py::ssize_t>(frames.size());
+  py::array_t<double> array({count, static_cast<py::ssize_t>(n), py::ssize_t{2}});
+  double* out = array.mutable_data();
+  {
+    py::gil_scoped_release release;
+    for (const std::vector<sm::Vec2>& frame : frames) {
+      if (frame.size() < n)
+        throw sm::InternalError("stickmorph module: a morph frame holds " + std::to_string(frame.size()) +
+                                " positions, fewer than the figure's " + std::to_string(n) + " vertices");
+      for (std::size_t v = 0; v < n; ++v) {
+        *out++ = frame[v][0];
+        *out++ = frame[v][1];
+      }
+    }
   }
   return array;
 }
@@ -692,4 +810,228 @@ Raises:
     range, or a negative smoothing_rounds.
   VerificationError: no compatible triangulation passing verification was
     found; the message names the face and the triangle.)doc");
+
+  m.def(
+      "triangulate_figures",
+      [](const py::object& source, const py::object& target, const py::object& edges,
+         const py::object& target_edges, const std::string& steiner, const py::object& enclosure_sides) {
+        const sm::FigureTriangulationOptions options = to_triangulation_options(steiner, enclosure_sides);
+        const auto figures = make_figure_pair(source, target, edges, target_edges, "source", "target");
+        sm::FigureTriangulation triangulation;
+        sm::FigureTriangulationStats stats;
+        {
+          py::gil_scoped_release release;
+          triangulation = sm::triangulate_figures(figures.first, figures.second, options, &stats);
+        }
+        return triangulation_dict(triangulation, stats);
+      },
+      py::arg("source"), py::arg("target"), py::arg("edges"), py::arg("target_edges") = py::none(),
+      py::arg("steiner") = "improved", py::arg("enclosure_sides") = 6,
+      R"doc(Compatibly triangulates two compatible stick figures (paper, Algorithm 3, steps 1-3).
+
+Both figures are enclosed in the same regular polygon; every interior face
+pair and the annulus between figure and enclosure are compatibly
+triangulated, and the pieces glued into one triangulation of the enclosure
+whose triangles are counter-clockwise in both figures and which contains
+every figure edge. It is verified in exact arithmetic before it is
+returned. The same triangulation `stickmorph triangulate` writes.
+
+Args:
+  source: #V by 2 float64 array-like, source coordinates.
+  target: #V by 2 float64 array-like, target coordinates; vertex i of the
+    source corresponds to vertex i of the target.
+  edges: #E by 2 integer array-like of vertex indices of the source (and of
+    the target unless target_edges is given).
+  target_edges: optional #E by 2 integer array-like, the target's edge list;
+    order and direction may differ from edges.
+  steiner: Steiner vertex placement in the faces, "improved" (default),
+    "sg2001" or "aronov" (see compatible_triangulation).
+  enclosure_sides: sides k of the common regular enclosure, at least 3.
+
+Returns:
+  dict (FORMAT.md's triangulation object) with
+    "figure_vertices"     int n (= #V)
+    "enclosure_vertices"  int k
+    "steiner_vertices"    int s
+    "source", "target"    (n+k+s) by 2 float64 ndarrays, node positions in the
+                          two figures: the n figure vertices in input order
+                          (exactly the given coordinates), then the k
+                          enclosure vertices counter-clockwise (the same in
+                          both), then the s Steiner vertices
+    "triangles"           #T by 3 int64 ndarray of node indices,
+                          counter-clockwise in both
+    "stats"               dict: "interior_faces" (int), "cut_bends" (int,
+                          Steiner vertices on the annulus cut),
+                          "interior_steiner" (int, Steiner vertices inside
+                          interior faces), "min_angle" (float, radians, the
+                          smallest triangle angle over both embeddings)
+
+Raises:
+  InvalidFigureError: the source or the target is invalid (the message
+    starts with "source: " or "target: ").
+  IncompatibleFiguresError: the figures are not compatible.
+  InvalidArgumentError: an unknown steiner name, enclosure_sides below 3, or
+    an array of the wrong shape or type.
+  VerificationError: no triangulation passing exact verification was found.)doc");
+
+  m.def(
+      "morph",
+      [](const py::object& source_xy, const py::object& target_xy, const py::object& edges,
+         const py::object& frames, const std::string& steiner, const std::string& weights,
+         const py::object& enclosure_sides, const std::string& method, bool verify,
+         const py::object& target_edges) {
+        // Arguments first, figures second, as the CLI does.
+        sm::MorphOptions options;
+        options.frames = to_frame_count(frames);
+        options.weights = sm::parse_weight_kind(weights);
+        options.verify = verify;
+        if (method != "barycentric" && method != "linear")
+          throw sm::InvalidArgumentError("unknown morph method '" + method +
+                                         "' (choose barycentric or linear)");
+        const sm::FigureTriangulationOptions tri_options =
+            to_triangulation_options(steiner, enclosure_sides);
+        const auto figures =
+            make_figure_pair(source_xy, target_xy, edges, target_edges, "source_xy", "target_xy");
+        const sm::StickFigure& source = figures.first;
+        const sm::StickFigure& target = figures.second;
+        const std::size_t n = source.vertices.size();
+
+        py::dict milliseconds;
+        py::dict statistics;
+        py::dict result;
+        if (method == "linear") {
+          // The paper's Figure 8d baseline: frames that are not stick figures
+          // compatible with the source are reported, not refused.
+          sm::MorphResult morphed;
+          std::vector<int> invalid;
+          double morph_ms = 0;
+          {
+            py::gil_scoped_release release;
+            sm::require_compatible(source, target);
+            const auto start = std::chrono::steady_clock::now();
+            morphed = sm::linear_morph(source, target, options.frames, &invalid);
+            morph_ms = milliseconds_since(start);
+          }
+          result["times"] = py::array_t<double>(static_cast<py::ssize_t>(morphed.times.size()),
+                                                morphed.times.data());
+          result["frames"] = figure_frames(morphed.frames, n);
+          result["triangulation"] = py::none();
+          milliseconds["triangulate"] = 0.0;
+          milliseconds["morph"] = morph_ms;
+          // Interpolation counts as solving, the validity check as verifying.
+          milliseconds["factorize"] = 0.0;
+          milliseconds["solve"] = morphed.stats.solve_ms;
+          milliseconds["verify"] = morphed.stats.verify_ms;
+          statistics["steiner_vertices"] = 0;
+          statistics["triangles"] = 0;
+          statistics["milliseconds"] = milliseconds;
+          statistics["method"] = method;
+          statistics["refined_frames"] = 0;
+          statistics["direct_frames"] = 0;
+          statistics["invalid_frames"] = to_list(invalid);
+          result["stats"] = statistics;
+          return result;
+        }
+
+        sm::FigureTriangulation triangulation;
+        sm::FigureTriangulationStats triangulation_stats;
+        sm::MorphResult morphed;
+        double triangulate_ms = 0;
+        double morph_ms = 0;
+        {
+          py::gil_scoped_release release;
+          auto start = std::chrono::steady_clock::now();
+          triangulation = sm::triangulate_figures(source, target, tri_options, &triangulation_stats);
+          triangulate_ms = milliseconds_since(start);
+          start = std::chrono::steady_clock::now();
+          morphed = sm::morph_triangulation(triangulation, source, options);
+          morph_ms = milliseconds_since(start);
+        }
+        result["times"] =
+            py::array_t<double>(static_cast<py::ssize_t>(morphed.times.size()), morphed.times.data());
+        result["frames"] = figure_frames(morphed.frames, n);
+        result["triangulation"] = triangulation_dict(triangulation, triangulation_stats);
+        milliseconds["triangulate"] = triangulate_ms;
+        milliseconds["morph"] = morph_ms;
+        milliseconds["factorize"] = morphed.stats.factorize_ms;
+        milliseconds["solve"] = morphed.stats.solve_ms;
+        milliseconds["verify"] = morphed.stats.verify_ms;
+        statistics["steiner_vertices"] = triangulation.steiner_vertices;
+        statistics["triangles"] = static_cast<py::ssize_t>(triangulation.triangles.size());
+        statistics["milliseconds"] = milliseconds;
+        statistics["method"] = method;
+        statistics["steiner_method"] = sm::steiner_method_name(tri_options.method);
+        statistics["enclosure_sides"] = tri_options.enclosure_sides;
+        statistics["weights"] = sm::weight_kind_name(options.weights);
+        statistics["verified"] = options.verify;
+        statistics["refined_frames"] = morphed.stats.refined_frames;
+        statistics["direct_frames"] = morphed.stats.direct_frames;
+        result["stats"] = statistics;
+        return result;
+      },
+      py::arg("source_xy"), py::arg("target_xy"), py::arg("edges"), py::arg("frames") = 50,
+      py::arg("steiner") = "improved", py::arg("weights") = "mvc", py::arg("enclosure_sides") = 6,
+      py::arg("method") = "barycentric", py::arg("verify") = true,
+      py::arg("target_edges") = py::none(),
+      R"doc(Morphs one stick figure into a compatible one (paper, Algorithm 3).
+
+The barycentric method (default) compatibly triangulates both figures inside
+a common convex enclosure (triangulate_figures) and morphs the triangulation
+by Floater & Gotsman: convex-combination weights interpolated linearly in
+time, positions solved for at every frame. Every frame is then a stick
+figure compatible with the source; with verify=True this is checked exactly
+for every frame (frames failing through roundoff are refined in long
+double, and a frame that still fails raises VerificationError). The linear
+method is the paper's Figure 8d baseline: straight-line interpolation of
+the vertices, whose invalid frames are reported, not refused. The same
+computation as `stickmorph morph`.
+
+Args:
+  source_xy: #V by 2 float64 array-like, source coordinates.
+  target_xy: #V by 2 float64 array-like, target coordinates; vertex i of the
+    source corresponds to vertex i of the target.
+  edges: #E by 2 integer array-like of vertex indices of the source (and of
+    the target unless target_edges is given).
+  frames: N, the number of frames, 2 <= N <= 100000; frame k is at time
+    k/(N-1).
+  steiner: "improved" (default), "sg2001" or "aronov", as for
+    triangulate_figures.
+  weights: "mvc" (mean value coordinates, default), "uniform" or "floater".
+  enclosure_sides: sides of the common regular enclosure, at least 3.
+  method: "barycentric" (default) or "linear".
+  verify: check every frame exactly (barycentric only).
+  target_edges: optional #E by 2 integer array-like, the target's edge list.
+
+Returns:
+  dict with
+    "times"          (N,) float64 ndarray, k/(N-1): 0.0 first, 1.0 last
+    "frames"         (N, #V, 2) float64 ndarray of the figure's vertices;
+                     frames[0] is exactly source_xy, frames[-1] exactly
+                     target_xy
+    "triangulation"  the dict triangulate_figures returns, the triangulation
+                     the morph used; None for method="linear"
+    "stats"          dict: "steiner_vertices" (int), "triangles" (int),
+                     "milliseconds" (dict of floats: "triangulate", "morph",
+                     "factorize", "solve", "verify"), "refined_frames" (int,
+                     frames refined in long double), "direct_frames" (int,
+                     frames whose warm-started iterative solve stalled or
+                     failed the exact check and were solved with the direct
+                     factorization), "method" (str); for
+                     "barycentric" also "steiner_method", "enclosure_sides",
+                     "weights" and "verified"; for "linear" also
+                     "invalid_frames" (list of int, the frames that are not
+                     stick figures compatible with the source). For "linear"
+                     the counts, refined_frames, direct_frames and the
+                     triangulate and factorize times are 0, "solve" is the interpolation and "verify" the check
+                     that finds the invalid frames.
+
+Raises:
+  InvalidFigureError: the source or the target is invalid (the message
+    starts with "source: " or "target: ").
+  IncompatibleFiguresError: the figures are not compatible.
+  InvalidArgumentError: frames out of range or not an integer, an unknown
+    method, weights or steiner name, enclosure_sides below 3, or an array of
+    the wrong shape or type.
+  VerificationError: a triangulation or a frame failed exact verification
+    and could not be repaired.)doc");
 }

@@ -1,0 +1,696 @@
+"""Tests of the Python `morph` and `triangulate_figures` functions.
+
+The engine verifies its own frames; these tests do not trust that. Every
+frame is re-checked here in pure Python with exact rational arithmetic on the
+returned doubles (fractions.Fraction): no two non-adjacent edges meet, no two
+adjacent edges overlap, no two vertices coincide, the counter-clockwise order
+of the neighbours around every vertex (sorted by exact angle comparison) is
+the source's, and the same face is the unbounded one. The triangulation is
+re-checked the same way: every triangle positive in both embeddings, the
+enclosure the same convex polygon in both, and the triangles tiling it.
+"""
+import functools
+import re
+import threading
+from fractions import Fraction
+
+import numpy as np
+import pytest
+
+import stickmorph
+
+# --------------------------------------------------------------------------
+# Figures
+
+# A unit-free tree: a degree-4 junction at 0 and a degree-3 junction at 1.
+TREE_SOURCE = [[0, 0], [3, 0], [0, 3], [-3, 0], [0, -3], [4, 1], [4, -1], [-1, 4]]
+TREE_TARGET = [[1, 1], [5, 2], [0.5, 4], [-2, -0.5], [2, -3], [7, 4], [6, 0], [-1.5, 5]]
+TREE_EDGES = [[0, 1], [0, 2], [0, 3], [0, 4], [1, 5], [1, 6], [2, 7]]
+
+# A letter A: apex 0, crossbar 1-2 closing the loop 0 1 2, legs 1-3 and 2-4.
+A_SOURCE = [[2, 6], [1, 3], [3, 3], [0, 0], [4, 0]]
+A_TARGET = [[3, 7], [1.5, 3.5], [4, 3], [0, 0], [5, -1]]
+A_EDGES = [[0, 1], [0, 2], [1, 2], [1, 3], [2, 4]]
+
+# A square with a dangling edge inside it, hanging from corner 1; in the
+# target the square is skewed and the dangling vertex has swung across to
+# the far corner, so the edge turns and stretches a long way.
+DANGLING_SOURCE = [[0, 0], [4, 0], [4, 4], [0, 4], [3, 1]]
+DANGLING_TARGET = [[0, 0], [5, 1], [4, 5], [-1, 3], [0.25, 3.25]]
+DANGLING_EDGES = [[0, 1], [1, 2], [2, 3], [3, 0], [1, 4]]
+
+# A small convex-to-non-convex hexagon, used to try every option.
+HEXAGON_SOURCE = [[2, 0], [4, 0], [5, 2], [4, 4], [2, 4], [1, 2]]
+HEXAGON_TARGET = [[0, 0], [6, 1], [4, 3], [6, 6], [1, 5], [2, 2.5]]
+HEXAGON_EDGES = [[0, 1], [1, 2], [2, 3], [3, 4], [4, 5], [5, 0]]
+
+
+def paper_pair(data_dir):
+    """The paper's Figure 8 S -> U polylines."""
+    source = stickmorph.load_figure(data_dir / "paper" / "s_to_u.source.json")
+    target = stickmorph.load_figure(data_dir / "paper" / "s_to_u.target.json")
+    return source["vertices"], target["vertices"], source["edges"]
+
+
+def named_pair(name, data_dir):
+    if name == "tree_junction":
+        return TREE_SOURCE, TREE_TARGET, TREE_EDGES
+    if name == "letter_a":
+        return A_SOURCE, A_TARGET, A_EDGES
+    if name == "square_dangling_inside":
+        return DANGLING_SOURCE, DANGLING_TARGET, DANGLING_EDGES
+    if name == "s_to_u":
+        return paper_pair(data_dir)
+    raise AssertionError(name)
+
+
+PAIRS = ["tree_junction", "letter_a", "square_dangling_inside", "s_to_u"]
+
+# --------------------------------------------------------------------------
+# Exact geometry on doubles
+
+
+def exact_points(points):
+    """Each coordinate as the Fraction equal to its double, exactly."""
+    return [(Fraction(float(x)), Fraction(float(y))) for x, y in np.asarray(points, dtype=float)]
+
+
+def sign(value):
+    return (value > 0) - (value < 0)
+
+
+def orient(a, b, c):
+    """+1 if a b c turn counter-clockwise, -1 clockwise, 0 collinear (exact)."""
+    return sign((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]))
+
+
+def in_box(p, a, b):
+    return min(a[0], b[0]) <= p[0] <= max(a[0], b[0]) and min(a[1], b[1]) <= p[1] <= max(a[1], b[1])
+
+
+def closed_segments_meet(a, b, c, d):
+    """True iff the closed segments ab and cd share a point."""
+    o1, o2, o3, o4 = orient(a, b, c), orient(a, b, d), orient(c, d, a), orient(c, d, b)
+    if o1 * o2 < 0 and o3 * o4 < 0:
+        return True
+    return ((o1 == 0 and in_box(c, a, b)) or (o2 == 0 and in_box(d, a, b))
+            or (o3 == 0 and in_box(a, c, d)) or (o4 == 0 and in_box(b, c, d)))
+
+
+def direction_order(u, v):
+    """Comparator of two direction vectors by angle in [0, 2 pi), exactly."""
+    def half(d):
+        return 0 if d[1] > 0 or (d[1] == 0 and d[0] > 0) else 1
+    if half(u) != half(v):
+        return half(u) - half(v)
+    return -sign(u[0] * v[1] - u[1] * v[0])
+
+
+def rotation(points, edges):
+    """Neighbours of every vertex, counter-clockwise by exact angle."""
+    neighbours = [[] for _ in points]
+    for i, j in edges:
+        neighbours[i].append(j)
+        neighbours[j].append(i)
+    result = []
+    for v, around in enumerate(neighbours):
+        def key(w, v=v):
+            return (points[w][0] - points[v][0], points[w][1] - points[v][1])
+        ordered = sorted(around, key=lambda w: functools.cmp_to_key(direction_order)(key(w)))
+        result.append(ordered)
+    return result
+
+
+def canonical_cycle(sequence):
+    """The rotation of a cyclic sequence of distinct items starting at its minimum."""
+    if not sequence:
+        return ()
+    k = sequence.index(min(sequence))
+    return tuple(sequence[k:] + sequence[:k])
+
+
+def faces(points, rotation_system):
+    """The faces as lists of darts (u, v), each face to the left of its darts,
+    with their exact signed areas (interior faces positive)."""
+    position = {(v, w): k for v, around in enumerate(rotation_system) for k, w in enumerate(around)}
+    seen, result = set(), []
+    for start in sorted(position):
+        dart = start
+        if dart in seen:
+            continue
+        walk, area = [], Fraction(0)
+        while dart not in seen:
+            seen.add(dart)
+            walk.append(dart)
+            u, v = dart
+            area += points[u][0] * points[v][1] - points[v][0] * points[u][1]
+            around = rotation_system[v]
+            # The next edge clockwise from v-u around v bounds the left face.
+            w = around[(position[(v, u)] - 1) % len(around)]
+            dart = (v, w)
+        result.append((walk, area / 2))
+    return result
+
+
+def exterior_face(points, rotation_system):
+    """The darts of the one face that is not positively oriented, or None."""
+    outer = [frozenset(walk) for walk, area in faces(points, rotation_system) if area <= 0]
+    assert len(outer) <= 1, f"{len(outer)} faces are not positively oriented"
+    return outer[0] if outer else None
+
+
+class Topology:
+    """What every frame must share with the source."""
+
+    def __init__(self, points, edges):
+        self.edges = [tuple(int(i) for i in e) for e in np.asarray(edges).reshape(-1, 2)]
+        exact = exact_points(points)
+        system = rotation(exact, self.edges)
+        self.rotation = [canonical_cycle(around) for around in system]
+        self.exterior = exterior_face(exact, system)
+
+
+def frame_problems(points, topology):
+    """Every way `points` with the topology's edges fails to be a stick
+    figure with the topology's rotations and exterior face; [] if none."""
+    exact = exact_points(points)
+    problems = []
+    if len(set(exact)) != len(exact):
+        problems.append("coincident vertices")
+    edges = topology.edges
+    for a in range(len(edges)):
+        for b in range(a + 1, len(edges)):
+            shared = set(edges[a]) & set(edges[b])
+            if not shared:
+                p, q = (exact[i] for i in edges[a])
+                r, s = (exact[i] for i in edges[b])
+                if closed_segments_meet(p, q, r, s):
+                    problems.append(f"edges {edges[a]} and {edges[b]} meet")
+            else:
+                (c,) = shared
+                (i,) = set(edges[a]) - shared
+                (j,) = set(edges[b]) - shared
+                u = (exact[i][0] - exact[c][0], exact[i][1] - exact[c][1])
+                w = (exact[j][0] - exact[c][0], exact[j][1] - exact[c][1])
+                if orient(exact[c], exact[i], exact[j]) == 0 and u[0] * w[0] + u[1] * w[1] > 0:
+                    problems.append(f"edges {edges[a]} and {edges[b]} overlap")
+    system = rotation(exact, edges)
+    for v, around in enumerate(system):
+        if canonical_cycle(around) != topology.rotation[v]:
+            problems.append(f"vertex {v}: neighbours {around}, source {list(topology.rotation[v])}")
+    if not problems and exterior_face(exact, system) != topology.exterior:
+        problems.append("another face is the exterior one")
+    return problems
+
+
+# The checker itself must be able to say no, or the morph tests prove nothing.
+
+
+def test_checker_accepts_the_source_and_rejects_broken_frames():
+    topology = Topology(A_SOURCE, A_EDGES)
+    assert frame_problems(A_SOURCE, topology) == []
+    # Apex pulled below the crossbar: no crossing, but the loop 0 1 2 turns
+    # over, which reverses the cyclic order of neighbours at 1 and 2.
+    flipped = [[2, 1], [1, 3], [3, 3], [0, 0], [4, 0]]
+    assert frame_problems(flipped, topology)
+    # The right leg swung across the left one: a crossing.
+    crossing = [[2, 6], [1, 3], [3, 3], [0, 0], [-1, 1]]
+    assert any("meet" in p for p in frame_problems(crossing, topology))
+    # The left leg's foot exactly on the right leg: a touching, no crossing.
+    touching = [[2, 6], [1, 3], [3, 3], [3.5, 1.5], [4, 0]]
+    assert any("meet" in p for p in frame_problems(touching, topology))
+    # The left leg folded back onto the crossbar: adjacent edges overlap.
+    overlapping = [[2, 6], [1, 3], [3, 3], [2, 3], [4, 0]]
+    assert any("overlap" in p for p in frame_problems(overlapping, topology))
+    # Two vertices at one point.
+    coincident = [[2, 6], [1, 3], [3, 3], [0, 0], [0, 0]]
+    assert "coincident vertices" in frame_problems(coincident, topology)
+
+
+def test_checker_tells_exterior_faces_apart():
+    # The same rotation at every vertex, but another face outside (the pair
+    # of tests/data/pairs/incompatible/exterior_differs has the same trait).
+    wheel = [[0.0, 0.0], [4.0, 0.0], [2.0, 4.0], [2.0, 1.0]]
+    other = [[0.0, 0.0], [2.0, 4.0], [2.0, 1.0], [4.0, 0.0]]
+    edges = [[0, 1], [1, 2], [2, 0], [0, 3], [1, 3], [2, 3]]
+    topology = Topology(wheel, edges)
+    assert Topology(other, edges).rotation == topology.rotation
+    assert frame_problems(other, topology) == ["another face is the exterior one"]
+
+
+def test_checker_sorts_by_exact_angle():
+    # Directions one ulp apart, which floating-point angles may not tell
+    # apart: the exact comparison puts them in order.
+    tiny = np.nextafter(1.0, 2.0)
+    points = [[0.0, 0.0], [1.0, 1.0], [1.0, tiny], [-1.0, 0.0]]
+    assert rotation(exact_points(points), [(0, 1), (0, 2), (0, 3)])[0] == [1, 2, 3]
+    points = [[0.0, 0.0], [1.0, 1.0], [tiny, 1.0], [-1.0, 0.0]]
+    assert rotation(exact_points(points), [(0, 1), (0, 2), (0, 3)])[0] == [2, 1, 3]
+
+
+# --------------------------------------------------------------------------
+# Triangulation checks
+
+
+def check_triangulation(tri, source, target, edges):
+    """Everything FORMAT.md promises about a triangulation dict, exactly."""
+    assert set(tri) == {"figure_vertices", "enclosure_vertices", "steiner_vertices", "source",
+                        "target", "triangles", "stats"}
+    n, k, s = tri["figure_vertices"], tri["enclosure_vertices"], tri["steiner_vertices"]
+    for count in (n, k, s):
+        assert type(count) is int
+    source = np.asarray(source, dtype=float)
+    target = np.asarray(target, dtype=float)
+    assert n == len(source) and k >= 3 and s >= 0
+    nodes = n + k + s
+    for positions in (tri["source"], tri["target"]):
+        assert isinstance(positions, np.ndarray)
+        assert positions.dtype == np.float64 and positions.shape == (nodes, 2)
+    # Figure vertices first, exactly as given.
+    assert np.array_equal(tri["source"][:n], source)
+    assert np.array_equal(tri["target"][:n], target)
+    # The enclosure: identical in both, strictly convex and counter-clockwise.
+    assert np.array_equal(tri["source"][n:n + k], tri["target"][n:n + k])
+    ring = exact_points(tri["source"][n:n + k])
+    for i in range(k):
+        assert orient(ring[i], ring[(i + 1) % k], ring[(i + 2) % k]) > 0, i
+
+    triangles = tri["triangles"]
+    assert isinstance(triangles, np.ndarray)
+    assert triangles.dtype == np.int64 and triangles.ndim == 2 and triangles.shape[1] == 3
+    assert triangles.min() >= 0 and triangles.max() < nodes
+    # A triangulated disk with k boundary nodes has 2 * nodes - k - 2 triangles.
+    assert len(triangles) == 2 * nodes - k - 2
+    # Positive in both embeddings, exactly; they tile the enclosure (each
+    # interior edge in two triangles, in opposite directions, each enclosure
+    # side in one) and cover exactly its area.
+    darts = set()
+    for embedding in (tri["source"], tri["target"]):
+        exact = exact_points(embedding)
+        area = Fraction(0)
+        for a, b, c in triangles:
+            assert orient(exact[a], exact[b], exact[c]) > 0, (a, b, c)
+            area += ((exact[b][0] - exact[a][0]) * (exact[c][1] - exact[a][1])
+                     - (exact[b][1] - exact[a][1]) * (exact[c][0] - exact[a][0])) / 2
+        enclosure_area = sum(ring[i][0] * ring[(i + 1) % k][1] - ring[(i + 1) % k][0] * ring[i][1]
+                             for i in range(k)) / 2
+        assert area == enclosure_area
+    for a, b, c in triangles.tolist():
+        for dart in ((a, b), (b, c), (c, a)):
+            assert dart not in darts, dart
+            darts.add(dart)
+    boundary = {(n + i, n + (i + 1) % k) for i in range(k)}
+    for u, v in darts:
+        assert ((v, u) in darts) != ((u, v) in boundary), (u, v)
+    # Every figure edge is a triangulation edge.
+    for i, j in np.asarray(edges).reshape(-1, 2).tolist():
+        assert (i, j) in darts or (j, i) in darts, (i, j)
+
+    stats = tri["stats"]
+    assert set(stats) == {"interior_faces", "cut_bends", "interior_steiner", "min_angle"}
+    interior = [f for f in stickmorph.decompose(source, edges) if not f["exterior"]]
+    assert stats["interior_faces"] == len(interior)
+    assert 0 <= stats["cut_bends"] and 0 <= stats["interior_steiner"]
+    assert stats["cut_bends"] + stats["interior_steiner"] <= s
+    angles = []
+    for embedding in (tri["source"], tri["target"]):
+        for corner in range(3):
+            p = embedding[triangles[:, corner]]
+            q = embedding[triangles[:, (corner + 1) % 3]]
+            r = embedding[triangles[:, (corner + 2) % 3]]
+            u, w = q - p, r - p
+            angles.append(np.arctan2(np.abs(u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0]),
+                                     (u * w).sum(axis=1)))
+    assert 0 < stats["min_angle"] < np.pi / 3 + 1e-12
+    assert stats["min_angle"] == pytest.approx(np.concatenate(angles).min(), rel=1e-9)
+
+
+def check_morph(result, source, target, edges, frames):
+    """Shapes and endpoints of a morph result, and every frame exactly valid."""
+    source = np.asarray(source, dtype=float)
+    target = np.asarray(target, dtype=float)
+    times, out = result["times"], result["frames"]
+    assert isinstance(times, np.ndarray) and times.dtype == np.float64 and times.shape == (frames,)
+    assert np.array_equal(times, np.arange(frames) / (frames - 1))
+    assert times[0] == 0.0 and times[-1] == 1.0
+    assert isinstance(out, np.ndarray) and out.dtype == np.float64
+    assert out.shape == (frames, len(source), 2)
+    assert np.array_equal(out[0], source)
+    assert np.array_equal(out[-1], target)
+    topology = Topology(source, edges)
+    for k, frame in enumerate(out):
+        assert frame_problems(frame, topology) == [], f"frame {k} (t = {times[k]})"
+    return topology
+
+
+# --------------------------------------------------------------------------
+# The barycentric morph
+
+
+@pytest.mark.parametrize("name", PAIRS)
+def test_every_frame_is_a_compatible_stick_figure(name, data_dir):
+    source, target, edges = named_pair(name, data_dir)
+    result = stickmorph.morph(source, target, edges)
+    check_morph(result, source, target, edges, 50)
+    # The figure really moves between the endpoints, continuously.
+    middle = result["frames"][25]
+    assert not np.array_equal(middle, np.asarray(source, float))
+    assert not np.array_equal(middle, np.asarray(target, float))
+
+    tri = result["triangulation"]
+    check_triangulation(tri, source, target, edges)
+    stats = result["stats"]
+    assert stats["steiner_vertices"] == tri["steiner_vertices"]
+    assert stats["triangles"] == len(tri["triangles"])
+    assert set(stats["milliseconds"]) == {"triangulate", "morph", "factorize", "solve", "verify"}
+    assert all(type(v) is float and v >= 0 for v in stats["milliseconds"].values())
+    assert type(stats["refined_frames"]) is int and 0 <= stats["refined_frames"] <= 50
+    assert type(stats["direct_frames"]) is int and 0 <= stats["direct_frames"] <= 50
+    assert set(stats) == {"steiner_vertices", "triangles", "milliseconds", "method", "steiner_method",
+                          "enclosure_sides", "weights", "verified", "refined_frames", "direct_frames"}
+    assert stats["method"] == "barycentric" and stats["verified"] is True
+    assert stats["steiner_method"] == "improved" and stats["weights"] == "mvc"
+    assert stats["enclosure_sides"] == 6 and tri["enclosure_vertices"] == 6
+    assert "invalid_frames" not in stats
+
+
+@pytest.mark.parametrize("name", PAIRS)
+def test_triangulate_figures(name, data_dir):
+    source, target, edges = named_pair(name, data_dir)
+    tri = stickmorph.triangulate_figures(source, target, edges)
+    check_triangulation(tri, source, target, edges)
+    # The morph uses the same triangulation for the same options.
+    used = stickmorph.morph(source, target, edges, frames=2)["triangulation"]
+    for key in ("figure_vertices", "enclosure_vertices", "steiner_vertices", "stats"):
+        assert used[key] == tri[key]
+    for key in ("source", "target", "triangles"):
+        assert np.array_equal(used[key], tri[key])
+
+
+@pytest.mark.parametrize("weights", ["mvc", "uniform", "floater"])
+def test_each_weight_kind(weights):
+    result = stickmorph.morph(HEXAGON_SOURCE, HEXAGON_TARGET, HEXAGON_EDGES, frames=9,
+                              weights=weights)
+    check_morph(result, HEXAGON_SOURCE, HEXAGON_TARGET, HEXAGON_EDGES, 9)
+    assert result["stats"]["weights"] == weights
+
+
+def test_weight_kinds_give_different_paths():
+    middles = [stickmorph.morph(DANGLING_SOURCE, DANGLING_TARGET, DANGLING_EDGES, frames=3,
+                                weights=w)["frames"][1] for w in ("mvc", "uniform", "floater")]
+    assert not np.array_equal(middles[0], middles[1])
+    assert not np.array_equal(middles[0], middles[2])
+
+
+@pytest.mark.parametrize("steiner", ["improved", "sg2001", "aronov"])
+def test_each_steiner_method(steiner):
+    # The zigzag-to-spiral polyline needs Steiner vertices in the annulus.
+    source = [[0, 0], [1, 2], [2, 0], [3, 2], [4, 0]]
+    target = [[0, 0], [4, 0], [4, 4], [1, 4], [1, 1.5]]
+    edges = [[0, 1], [1, 2], [2, 3], [3, 4]]
+    result = stickmorph.morph(source, target, edges, frames=9, steiner=steiner)
+    check_morph(result, source, target, edges, 9)
+    check_triangulation(result["triangulation"], source, target, edges)
+    assert result["stats"]["steiner_method"] == steiner
+    tri = stickmorph.triangulate_figures(source, target, edges, steiner=steiner)
+    check_triangulation(tri, source, target, edges)
+    assert tri["steiner_vertices"] == result["stats"]["steiner_vertices"]
+
+
+@pytest.mark.parametrize("sides", [3, 4, 11])
+def test_enclosure_sides(sides):
+    result = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=5, enclosure_sides=sides)
+    check_morph(result, A_SOURCE, A_TARGET, A_EDGES, 5)
+    check_triangulation(result["triangulation"], A_SOURCE, A_TARGET, A_EDGES)
+    assert result["triangulation"]["enclosure_vertices"] == sides
+    assert result["stats"]["enclosure_sides"] == sides
+    tri = stickmorph.triangulate_figures(A_SOURCE, A_TARGET, A_EDGES, enclosure_sides=sides)
+    assert tri["enclosure_vertices"] == sides
+
+
+@pytest.mark.parametrize("frames", [2, 3, 7, 101])
+def test_frame_counts(frames):
+    result = stickmorph.morph(TREE_SOURCE, TREE_TARGET, TREE_EDGES, frames=frames)
+    check_morph(result, TREE_SOURCE, TREE_TARGET, TREE_EDGES, frames)
+
+
+def test_frames_accepts_numpy_integers():
+    result = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=np.int16(4))
+    assert result["frames"].shape == (4, 5, 2)
+
+
+def test_without_verification_frames_are_still_valid_here():
+    result = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=11, verify=False)
+    check_morph(result, A_SOURCE, A_TARGET, A_EDGES, 11)
+    assert result["stats"]["verified"] is False
+
+
+def test_target_edges_in_another_order_and_direction(data_dir):
+    folder = data_dir / "pairs" / "compatible"
+    source = stickmorph.load_figure(folder / "square_with_spikes.source.json")
+    target = stickmorph.load_figure(folder / "square_with_spikes.target.json")
+    assert not np.array_equal(source["edges"], target["edges"])
+    result = stickmorph.morph(source["vertices"], target["vertices"], source["edges"], frames=12,
+                              target_edges=target["edges"])
+    check_morph(result, source["vertices"], target["vertices"], source["edges"], 12)
+    tri = stickmorph.triangulate_figures(source["vertices"], target["vertices"], source["edges"],
+                                         target_edges=target["edges"])
+    check_triangulation(tri, source["vertices"], target["vertices"], source["edges"])
+
+
+def test_identical_source_and_target_stay_put():
+    result = stickmorph.morph(A_SOURCE, A_SOURCE, A_EDGES, frames=6)
+    for frame in result["frames"]:
+        np.testing.assert_allclose(frame, np.asarray(A_SOURCE, float), rtol=0, atol=1e-12)
+
+
+def test_results_do_not_share_memory():
+    result = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=3)
+    again = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=3)
+    result["frames"][:] = 0
+    result["triangulation"]["source"][:] = 0
+    assert np.array_equal(again["frames"][0], np.asarray(A_SOURCE, float))
+    assert result["frames"].flags.writeable and result["frames"].flags.c_contiguous
+
+
+def test_morph_from_threads(data_dir):
+    # The engine runs without the GIL; concurrent morphs must not interfere.
+    source, target, edges = paper_pair(data_dir)
+    expected = stickmorph.morph(source, target, edges, frames=20)["frames"]
+    results, failures = [], []
+
+    def work():
+        try:
+            for _ in range(10):
+                results.append(stickmorph.morph(source, target, edges, frames=20)["frames"])
+        except Exception as error:  # reported below
+            failures.append(error)
+
+    threads = [threading.Thread(target=work) for _ in range(4)]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    assert failures == []
+    assert len(results) == 40 and all(np.array_equal(r, expected) for r in results)
+
+
+# --------------------------------------------------------------------------
+# The linear baseline
+
+
+def test_linear_s_to_u_self_intersects(data_dir):
+    source, target, edges = paper_pair(data_dir)
+    frames = 50
+    result = stickmorph.morph(source, target, edges, frames=frames, method="linear")
+    assert result["triangulation"] is None
+    times, out = result["times"], result["frames"]
+    assert np.array_equal(times, np.arange(frames) / (frames - 1))
+    assert out.shape == (frames, len(source), 2) and out.dtype == np.float64
+    assert np.array_equal(out[0], source) and np.array_equal(out[-1], target)
+    # Straight lines: vertex v at time t is (1 - t) source + t target.
+    straight = (1 - times)[:, None, None] * source[None] + times[:, None, None] * target[None]
+    np.testing.assert_allclose(out, straight, rtol=0, atol=1e-14)
+
+    stats = result["stats"]
+    invalid = stats["invalid_frames"]
+    assert isinstance(invalid, list) and all(type(f) is int for f in invalid)
+    assert invalid, "the paper's Figure 8d: the S self-intersects on its way to the U"
+    assert invalid == sorted(invalid)
+    # The engine's verdict agrees with the exact check here, frame by frame.
+    topology = Topology(source, edges)
+    assert invalid == [k for k, frame in enumerate(out) if frame_problems(frame, topology)]
+    assert 0 not in invalid and frames - 1 not in invalid
+    assert stats["method"] == "linear"
+    assert stats["steiner_vertices"] == 0 and stats["triangles"] == 0
+    assert stats["refined_frames"] == 0 and stats["direct_frames"] == 0
+    assert set(stats) == {"steiner_vertices", "triangles", "milliseconds", "method", "refined_frames",
+                          "direct_frames", "invalid_frames"}
+    assert set(stats["milliseconds"]) == {"triangulate", "morph", "factorize", "solve", "verify"}
+    assert stats["milliseconds"]["triangulate"] == 0.0 and stats["milliseconds"]["factorize"] == 0.0
+
+    # The barycentric morph of the same pair has no invalid frame.
+    check_morph(stickmorph.morph(source, target, edges, frames=frames), source, target, edges, frames)
+
+
+def test_linear_valid_morph_reports_nothing():
+    result = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=10, method="linear")
+    assert result["stats"]["invalid_frames"] == []
+    check_morph(result, A_SOURCE, A_TARGET, A_EDGES, 10)
+
+
+def test_linear_accepts_the_largest_frame_count():
+    result = stickmorph.morph([[0, 0], [1, 0]], [[0, 1], [2, 2]], [[0, 1]], method="linear",
+                              frames=100000)
+    assert result["frames"].shape == (100000, 2, 2)
+    assert result["times"][-1] == 1.0 and result["stats"]["invalid_frames"] == []
+
+
+# --------------------------------------------------------------------------
+# Errors
+
+
+def test_defaults_are_documented():
+    doc = stickmorph.morph.__doc__
+    for default in (r"frames: \w+ = 50", r"steiner: str = 'improved'", r"weights: str = 'mvc'",
+                    r"enclosure_sides: \w+ = 6", r"method: str = 'barycentric'",
+                    r"verify: bool = True", r"target_edges: \w+ = None"):
+        assert re.search(default, doc), default
+    assert "(N, #V, 2)" in doc and "(N,) float64" in doc
+    doc = stickmorph.triangulate_figures.__doc__
+    for default in (r"steiner: str = 'improved'", r"enclosure_sides: \w+ = 6",
+                    r"target_edges: \w+ = None"):
+        assert re.search(default, doc), default
+    assert "#T by 3 int64" in doc
+
+
+@pytest.mark.parametrize("keyword, value, message", [
+    ("method", "spline", "unknown morph method 'spline' (choose barycentric or linear)"),
+    ("weights", "cotan", "unknown weight kind 'cotan' (choose mvc, uniform or floater)"),
+    ("steiner", "delaunay", "unknown Steiner method 'delaunay' (choose aronov, sg2001 or improved)"),
+])
+@pytest.mark.parametrize("method", ["barycentric", "linear"])
+def test_unknown_names(keyword, value, message, method):
+    arguments = {"method": method, keyword: value}
+    with pytest.raises(stickmorph.InvalidArgumentError) as error:
+        stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, **arguments)
+    assert str(error.value) == message
+
+
+def test_unknown_steiner_name_in_triangulate_figures():
+    with pytest.raises(stickmorph.InvalidArgumentError, match="unknown Steiner method 'x'"):
+        stickmorph.triangulate_figures(A_SOURCE, A_TARGET, A_EDGES, steiner="x")
+
+
+@pytest.mark.parametrize("frames", [1, 0, -3, 100001, 10**30, -10**30])
+@pytest.mark.parametrize("method", ["barycentric", "linear"])
+def test_frames_out_of_range(frames, method):
+    with pytest.raises(stickmorph.InvalidArgumentError) as error:
+        stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=frames, method=method)
+    assert str(error.value) == f"the number of frames must be between 2 and 100000, got {frames}"
+
+
+@pytest.mark.parametrize("frames", [2.0, 7.5, "7", True, None])
+def test_frames_not_an_integer(frames):
+    with pytest.raises(stickmorph.InvalidArgumentError, match="frames must be an integer"):
+        stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=frames)
+
+
+@pytest.mark.parametrize("sides, message", [
+    (2, "the enclosure needs at least 3 sides, got 2"),
+    (0, "the enclosure needs at least 3 sides, got 0"),
+    (-10**20, "the enclosure needs at least 3 sides, got -100000000000000000000"),
+    (2**31, "the enclosure can have at most 2147483647 sides, got 2147483648"),
+])
+def test_enclosure_sides_out_of_range(sides, message):
+    for method in ("barycentric", "linear"):
+        with pytest.raises(stickmorph.InvalidArgumentError) as error:
+            stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, enclosure_sides=sides, method=method)
+        assert str(error.value) == message
+    with pytest.raises(stickmorph.InvalidArgumentError) as error:
+        stickmorph.triangulate_figures(A_SOURCE, A_TARGET, A_EDGES, enclosure_sides=sides)
+    assert str(error.value) == message
+
+
+def test_enclosure_sides_not_an_integer():
+    with pytest.raises(stickmorph.InvalidArgumentError, match="enclosure_sides must be an integer"):
+        stickmorph.triangulate_figures(A_SOURCE, A_TARGET, A_EDGES, enclosure_sides=6.0)
+
+
+INCOMPATIBLE = ["junction_rotation", "mirror_image", "exterior_differs", "polygon_reversed",
+                "edge_set_differs", "vertex_count_differs"]
+
+
+def test_every_incompatible_pair_is_listed(data_dir):
+    on_disk = {p.name.rsplit(".", 2)[0] for p in (data_dir / "pairs" / "incompatible").glob("*.json")}
+    assert on_disk == set(INCOMPATIBLE)
+
+
+@pytest.mark.parametrize("name", INCOMPATIBLE)
+def test_incompatible_figures(name, data_dir):
+    folder = data_dir / "pairs" / "incompatible"
+    source = stickmorph.load_figure(folder / f"{name}.source.json")
+    target = stickmorph.load_figure(folder / f"{name}.target.json")
+    arguments = (source["vertices"], target["vertices"], source["edges"])
+    for method in ("barycentric", "linear"):
+        with pytest.raises(stickmorph.IncompatibleFiguresError) as error:
+            stickmorph.morph(*arguments, target_edges=target["edges"], method=method)
+        assert str(error.value)
+    with pytest.raises(stickmorph.IncompatibleFiguresError):
+        stickmorph.triangulate_figures(*arguments, target_edges=target["edges"])
+
+
+def test_incompatible_is_not_invalid():
+    with pytest.raises(stickmorph.IncompatibleFiguresError) as error:
+        stickmorph.morph(A_SOURCE, [[-x, y] for x, y in A_SOURCE], A_EDGES)
+    assert not isinstance(error.value, stickmorph.InvalidFigureError)
+    assert isinstance(error.value, stickmorph.StickMorphError)
+
+
+CROSSING = [[0, 0], [1, 1], [1, 0], [0, 1]]  # edges 0-1 and 2-3 cross
+CROSSING_EDGES = [[0, 1], [2, 3], [1, 2]]
+
+
+@pytest.mark.parametrize("function", ["morph", "triangulate_figures"])
+def test_invalid_source_or_target(function):
+    call = getattr(stickmorph, function)
+    valid = [[0, 0], [1, 0], [1, 1], [0, 1]]
+    with pytest.raises(stickmorph.InvalidFigureError) as error:
+        call(CROSSING, valid, CROSSING_EDGES)
+    assert str(error.value).startswith("source: ")
+    assert error.value.defect == "crossing_edges" and error.value.edges == [0, 1]
+    with pytest.raises(stickmorph.InvalidFigureError) as error:
+        call(valid, CROSSING, CROSSING_EDGES)
+    assert str(error.value).startswith("target: ")
+    assert error.value.defect == "crossing_edges"
+    # Both bad: the source is named.
+    with pytest.raises(stickmorph.InvalidFigureError, match="^source: "):
+        call(CROSSING, CROSSING, CROSSING_EDGES)
+    # A bad target edge list is the target's defect.
+    with pytest.raises(stickmorph.InvalidFigureError, match="^target: ") as error:
+        call(valid, valid, [[0, 1], [1, 2], [2, 3]], target_edges=[[0, 1], [1, 2], [2, 2]])
+    assert error.value.defect == "self_loop"
+
+
+def test_invalid_source_with_linear_method():
+    with pytest.raises(stickmorph.InvalidFigureError, match="^source: "):
+        stickmorph.morph([[0, 0], [0, 0]], [[0, 0], [1, 0]], [[0, 1]], method="linear")
+
+
+@pytest.mark.parametrize("function", ["morph", "triangulate_figures"])
+def test_arrays_of_the_wrong_shape(function):
+    call = getattr(stickmorph, function)
+    with pytest.raises(stickmorph.InvalidArgumentError, match=r"must have shape \(#V, 2\), got \(5, 3\)"):
+        call(np.zeros((5, 3)), A_TARGET, A_EDGES)
+    with pytest.raises(stickmorph.InvalidArgumentError, match=r"must have shape \(#E, 2\)"):
+        call(A_SOURCE, A_TARGET, [0, 1, 2])
+    with pytest.raises(stickmorph.InvalidArgumentError, match="must hold real numbers"):
+        call(A_SOURCE, [["a", "b"]] * 5, A_EDGES)
+    with pytest.raises(stickmorph.InvalidArgumentError, match="edge 0: index 0.5 is not an integer"):
+        call(A_SOURCE, A_TARGET, [[0.5, 1]] + A_EDGES[1:])
+
+
+def test_argument_checks_come_before_figure_checks():
+    # As in the CLI: a bad option is reported even when the figures are bad too.
+    with pytest.raises(stickmorph.InvalidArgumentError):
+        stickmorph.morph(CROSSING, CROSSING, CROSSING_EDGES, weights="x")
