@@ -233,10 +233,8 @@ std::string morph_document(const StickFigure& source, const std::vector<double>&
   if (morph_stats) {
     out.key("refined_frames");
     out.value(morph_stats->refined_frames);
-    out.key("solver");
-    out.value(morph_stats->solver);
-    out.key("direct_frames");
-    out.value(morph_stats->direct_frames);
+    out.key("factorizations");
+    out.value(morph_stats->factorizations);
   }
   if (invalid_frames) {
     out.key("invalid_frames");

@@ -927,7 +927,7 @@ Raises:
           statistics["milliseconds"] = milliseconds;
           statistics["method"] = method;
           statistics["refined_frames"] = 0;
-          statistics["direct_frames"] = 0;
+          statistics["factorizations"] = 0;
           statistics["invalid_frames"] = to_list(invalid);
           result["stats"] = statistics;
           return result;
@@ -965,7 +965,7 @@ Raises:
         statistics["weights"] = sm::weight_kind_name(options.weights);
         statistics["verified"] = options.verify;
         statistics["refined_frames"] = morphed.stats.refined_frames;
-        statistics["direct_frames"] = morphed.stats.direct_frames;
+        statistics["factorizations"] = morphed.stats.factorizations;
         result["stats"] = statistics;
         return result;
       },
@@ -1013,7 +1013,7 @@ Returns:
     "stats"          dict: "steiner_vertices" (int), "triangles" (int),
                      "milliseconds" (dict of floats: "triangulate", "morph",
                      "factorize", "solve", "verify"), "refined_frames" (int,
-                     frames refined in long double), "direct_frames" (int,
+                     frames refined in long double), "factorizations" (int,
                      frames whose warm-started iterative solve stalled or
                      failed the exact check and were solved with the direct
                      factorization), "method" (str); for
@@ -1021,7 +1021,7 @@ Returns:
                      "weights" and "verified"; for "linear" also
                      "invalid_frames" (list of int, the frames that are not
                      stick figures compatible with the source). For "linear"
-                     the counts, refined_frames, direct_frames and the
+                     the counts, refined_frames, factorizations and the
                      triangulate and factorize times are 0, "solve" is the interpolation and "verify" the check
                      that finds the invalid frames.
 

@@ -1,7 +1,6 @@
 #include "stickmorph/morph.h"
 
 #include <Eigen/Dense>
-#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseLU>
 
 #include <algorithm>
@@ -369,15 +368,19 @@ std::vector<double> node_weights(const FigureTriangulation& tri, const Topology&
 ///       8065   37 ms                47 ms           27 ms,    err 3e-10    53 ms
 /// (BiCGSTAB with IncompleteLUT was slower than both LU variants; AMD and
 /// natural orderings gave 1.1-4 times the fill of COLAMD and up to 11 times
-/// the time.) On those webs the warm-started iteration is the faster by
-/// 1.4-3.5 times; on the long thin triangulations around polylines and trees
-/// it converges slowly and is up to 7 times slower than the factorization
-/// (benchmark_morph). So each morph measures both on its first interior
-/// frame and keeps the faster for the rest. An iterative result is never
-/// trusted on its own: every frame is verified exactly, and a frame whose
-/// iteration stalls or whose result fails verification is solved again with
-/// the direct factorization (pattern analysed once), which the long double
-/// refinement then reuses.
+/// the time.) On the long thin triangulations around polylines and trees
+/// neither helps much: a numeric refactorization costs nearly a fresh LU
+/// there, and diagonally preconditioned BiCGSTAB converges slowly (up to 7
+/// times slower, benchmark_morph); BiCGSTAB preconditioned with a nearby
+/// frame's LU needs two preconditioner solves per column and step, and costs
+/// about what a factorization does. What is fast everywhere: iterative
+/// refinement on the LU of a nearby frame (the anchor), from the previous
+/// frame's solution, both coordinates per solve. Consecutive systems differ
+/// only by the blend, so it converges in a step or two; when it needs more
+/// than kAnchorIterations the frame is factorized and becomes the new
+/// anchor. An iterative result is never trusted on its own: every frame is
+/// verified exactly, and one that fails is solved directly at its own time
+/// (the factorization that the long double refinement then reuses).
 class MorphSystem {
  public:
   MorphSystem(const FigureTriangulation& tri, WeightKind kind) : tri_(tri), topo_(build_topology(tri)) {
@@ -434,22 +437,32 @@ class MorphSystem {
     return lu_.info() == Eigen::Success;
   }
 
-  /// Solves the system blended to time t by BiCGSTAB with a diagonal
-  /// preconditioner, warm-started from `guess`. False if it does not reach
-  /// the tolerance; the caller then uses the direct factorization.
+  /// Solves the system blended to time t by iterative refinement on the last
+  /// factorization (the anchor), starting from `guess`: x += LU^-1 (b - A x),
+  /// both coordinates in one pass. Consecutive systems differ only by the
+  /// blend, so the anchor's inverse is close to this system's and each step
+  /// gains several digits. False if the residual does not drop below the
+  /// tolerance within kAnchorIterations steps: the anchor is too far, and the
+  /// caller factorizes at t instead.
   bool iterate(double t, const Eigen::MatrixX2d& guess, Eigen::MatrixX2d& x) {
     t_ = t;
     const double* v0 = a0_.valuePtr();
     const double* v1 = a1_.valuePtr();
     double* v = a_.valuePtr();
     for (Eigen::Index e = 0; e < a_.nonZeros(); ++e) v[e] = (1 - t) * v0[e] + t * v1[e];
-    iterative_.setTolerance(1e-13);
-    iterative_.setMaxIterations(std::max(100, 4 * unknowns()));
-    iterative_.compute(a_);
     const Eigen::MatrixX2d b = rhs().cast<double>();
-    x = iterative_.solveWithGuess(b, guess);
-    return iterative_.info() == Eigen::Success && x.allFinite();
+    const double tolerance = 1e-13 * std::max(b.norm(), 1e-300);
+    x = guess;
+    for (int step = 0; step < kAnchorIterations; ++step) {
+      const Eigen::MatrixX2d residual = b - a_ * x;
+      if (!residual.allFinite()) return false;
+      if (residual.norm() <= tolerance) return true;
+      x += lu_.solve(residual);
+    }
+    return (b - a_ * x).norm() <= tolerance && x.allFinite();
   }
+  /// Steps after which an anchor counts as too far from the frame.
+  static constexpr int kAnchorIterations = 8;
 
   /// Interior coordinates in the source embedding: the first warm start.
   Eigen::MatrixX2d source_coordinates() const {
@@ -509,7 +522,6 @@ class MorphSystem {
   LongVector b0_, b1_;
   double t_ = 0;
   Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
-  Eigen::BiCGSTAB<SparseMatrix, Eigen::DiagonalPreconditioner<double>> iterative_;
 };
 
 void require_source_matches(const FigureTriangulation& tri, const StickFigure& source) {
@@ -603,7 +615,8 @@ MorphResult morph_triangulation(const FigureTriangulation& triangulation, const 
   Eigen::MatrixX2d guess = system.source_coordinates();
   Eigen::MatrixX2d x;
   bool direct = false;
-  bool use_iteration = false;
+  bool anchored = false;        // a factorization exists to iterate on
+  bool anchor_too_far = false;  // the last iteration did not converge
   // The direct factorization of frame f's system, into x.
   auto solve_directly = [&](int f, double t) {
     auto begin = Clock::now();
@@ -612,6 +625,7 @@ MorphResult morph_triangulation(const FigureTriangulation& triangulation, const 
     begin = Clock::now();
     x = system.solve();
     result.stats.solve_ms += ms_since(begin);
+    ++result.stats.factorizations;
     direct = true;
   };
   for (int f = 0; f <= last; ++f) {
@@ -625,28 +639,22 @@ MorphResult morph_triangulation(const FigureTriangulation& triangulation, const 
       // arithmetic), while the contract (FORMAT.md) promises frames[0] is
       // the source and the last frame the target, bit for bit.
       positions = f == 0 ? triangulation.source : triangulation.target;
-    } else if (f == 1) {
-      // Measure both solvers on this frame; keep the direct result.
-      start = Clock::now();
-      Eigen::MatrixX2d iterated;
-      const bool converged = system.iterate(t, guess, iterated);
-      const double iterative_ms = ms_since(start);
-      result.stats.solve_ms += iterative_ms;
-      start = Clock::now();
-      solve_directly(f, t);
-      use_iteration = converged && iterative_ms < ms_since(start);
-      result.stats.solver = use_iteration ? "bicgstab" : "sparse_lu";
-      positions = system.positions(x);
-      guess = x;
     } else {
-      direct = !use_iteration;
-      if (use_iteration) {
+      // The first interior frame is factorized; later frames iterate on the
+      // latest factorization and refactorize only when it is too far.
+      // Right after an iteration that did not converge, frames are too far
+      // apart for the anchor: factorize without trying.
+      direct = !anchored || anchor_too_far;
+      if (!direct) {
         start = Clock::now();
         direct = !system.iterate(t, guess, x);
         result.stats.solve_ms += ms_since(start);
-        if (direct) ++result.stats.direct_frames;  // the iteration stalled
+        anchor_too_far = direct;
+      } else {
+        anchor_too_far = false;
       }
       if (direct) solve_directly(f, t);
+      anchored = true;
       positions = system.positions(x);
       guess = x;
     }
@@ -658,7 +666,6 @@ MorphResult morph_triangulation(const FigureTriangulation& triangulation, const 
         // The iteration's residual can flip a nearly flat triangle: solve
         // this frame directly.
         solve_directly(f, t);
-        ++result.stats.direct_frames;
         positions = system.positions(x);
         start = Clock::now();
         defect = frame_defect(triangulation, source, source_decomposition, positions, f, t);

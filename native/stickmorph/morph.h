@@ -75,12 +75,10 @@ struct MorphStats {
   double solve_ms = 0;      ///< iterative solves, triangular solves and refinement
   double verify_ms = 0;     ///< exact per-frame checks
   int refined_frames = 0;   ///< frames that needed long double refinement
-  /// Solver kept after measuring both on the first interior frame:
-  /// "bicgstab" (warm-started) or "sparse_lu" (pattern analysed once).
-  std::string solver = "sparse_lu";
-  /// With "bicgstab": frames solved directly after all (the iteration
-  /// stalled, or its frame failed the exact check).
-  int direct_frames = 0;
+  /// Numeric LU factorizations: the first interior frame, frames the
+  /// anchored iteration could not solve quickly, frames that failed the exact
+  /// check after an iterative solve. The rest cost a few triangular solves.
+  int factorizations = 0;
 };
 
 struct MorphResult {
