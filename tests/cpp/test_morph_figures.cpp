@@ -1,0 +1,107 @@
+// End to end: Algorithm 3 (triangulate_figures) and the Floater-Gotsman morph
+// (morph_triangulation) on whole stick figures, every frame verified.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "figures.h"
+#include "polygons.h"
+#include "stickmorph/compatibility.h"
+#include "stickmorph/figure_triangulation.h"
+#include "stickmorph/frame_verification.h"
+#include "stickmorph/morph.h"
+
+using namespace stickmorph;
+using namespace stickmorph::test;
+
+namespace {
+
+StickFigure moved(const StickFigure& f, double angle, double scale, double dx, double dy) {
+  StickFigure g = f;
+  const double c = std::cos(angle) * scale, s = std::sin(angle) * scale;
+  for (Vec2& p : g.vertices) p = {c * p[0] - s * p[1] + dx, s * p[0] + c * p[1] + dy};
+  return g;
+}
+
+// Morphs with the default options and checks every frame again, apart from
+// the morph's own check: endpoints exact, every frame a stick figure with
+// the source's cyclic sequences.
+void check_morph(const StickFigure& s, const StickFigure& t, int frames = 12) {
+  REQUIRE(check_compatibility(s, t).compatible());
+  const FigureTriangulation tri = triangulate_figures(s, t);
+  MorphOptions options;
+  options.frames = frames;
+  const MorphResult result = morph_triangulation(tri, s, options);
+  REQUIRE(int(result.frames.size()) == frames);
+  const std::size_t n = s.vertices.size();
+  for (std::size_t v = 0; v < n; ++v) {
+    CHECK(result.frames.front()[v] == s.vertices[v]);
+    CHECK(result.frames.back()[v] == t.vertices[v]);
+  }
+  for (int f = 0; f < frames; ++f) {
+    const std::vector<Vec2> figure(result.frames[f].begin(), result.frames[f].begin() + long(n));
+    INFO("frame " << f);
+    CHECK(is_frame_valid(s, figure));
+    for (const auto& tr : tri.triangles)
+      CHECK(orientation(result.frames[f][tr[0]], result.frames[f][tr[1]], result.frames[f][tr[2]]) > 0);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("the paper's cases morph with every frame valid", "[morph_figures]") {
+  SECTION("S to U (Figure 8c)") {
+    check_morph(polyline({{3, 5}, {2, 6}, {1, 6}, {0, 5}, {0, 4}, {1, 3}, {2, 3}, {3, 2}, {3, 1}, {2, 0}, {1, 0}, {0, 1}}),
+                polyline({{0, 6}, {0, 4.5}, {0, 3}, {0, 1.5}, {0.5, 0.5}, {1.5, 0}, {2.5, 0}, {3.5, 0.5}, {4, 1.5}, {4, 3}, {4, 4.5}, {4, 6}}));
+  }
+  SECTION("a triangulation with a common convex boundary (Figure 3)") {
+    const StickFigure s = grid_triangulation(5);
+    StickFigure t = s;
+    for (Vec2& p : t.vertices)
+      if (p[0] > 0 && p[0] < 4 && p[1] > 0 && p[1] < 4) p = {p[0] + 0.3 * (p[1] - 2), p[1] - 0.2 * (p[0] - 2)};
+    check_morph(s, t);
+  }
+  SECTION("a polygon pair (Figure 4)") {
+    std::mt19937 rng(4);
+    check_morph(polygon(star_polygon(rng, 12, 0.5)), polygon(two_opt_polygon(rng, 12)));
+  }
+  SECTION("a figure with several faces (Figure 5)") {
+    const RawEdges edges = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 2}, {1, 4}, {3, 5}};
+    check_morph(figure({{0, 0}, {4, 0}, {4, 4}, {0, 4}, {3, 1.5}, {-2, 5}}, edges),
+                figure({{0, 0}, {5, 1}, {3, 5}, {-1, 3}, {3.5, 2}, {-3, 1}}, edges));
+  }
+}
+
+TEST_CASE("trees, dangling edges, single edges and collinear polylines morph", "[morph_figures]") {
+  const StickFigure tree = figure({{0, 0}, {1, 0}, {0, 1}, {-1, -1}, {2, 1}, {2, -1}}, {{0, 1}, {0, 2}, {0, 3}, {1, 4}, {1, 5}});
+  check_morph(tree, moved(tree, 2.5, 1.7, 3, -1));
+  const RawEdges spike = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {1, 4}};
+  check_morph(figure({{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1, 3}}, spike), figure({{0, 0}, {4, 0}, {4, 4}, {0, 4}, {3.5, 3.5}}, spike));
+  check_morph(figure({{0, 0}, {1, 0}}, {{0, 1}}), figure({{0, 0}, {-1, 0.1}}, {{0, 1}}));
+  check_morph(figure({{2, 3}}, {}), figure({{-5, 7}}, {}));
+  check_morph(polyline({{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}}), polyline({{0, 0}, {0, 1}, {0, 2}, {0, 3}, {0, 4}}));
+}
+
+TEST_CASE("figures far apart and at very different scales morph", "[morph_figures]") {
+  std::mt19937 rng(9);
+  const StickFigure f = random_plane_graph(rng, 14, 0.5);
+  check_morph(f, moved(f, 1.0, 1.0, 1e4, -3e4));
+  check_morph(f, moved(f, -0.5, 1e-3, 0.2, 0.1));
+}
+
+TEST_CASE("random compatible stick figures morph with every frame verified", "[morph_figures][property]") {
+  std::mt19937 rng(77);
+  std::normal_distribution<double> jitter(0.0, 0.3);
+  int tested = 0;
+  for (int round = 0; tested < 25 && round < 300; ++round) {
+    // Thinned triangulations: faces of every size, trees, dangling edges.
+    const StickFigure s = random_plane_graph(rng, 6 + round % 25, 0.25 + 0.02 * (round % 30));
+    StickFigure t = moved(s, 0.9 * round, 0.5 + 0.1 * (round % 7), round % 5, -(round % 3));
+    for (Vec2& p : t.vertices) p = {p[0] + jitter(rng), p[1] + jitter(rng)};
+    if (!is_valid(t) || !check_compatibility(s, t).compatible()) continue;
+    ++tested;
+    check_morph(s, t, 8);
+  }
+  CHECK(tested == 25);
+}
