@@ -379,15 +379,21 @@ std::pair<sm::StickFigure, sm::StickFigure> make_figure_pair(const py::object& s
   return {std::move(source), std::move(target)};
 }
 
+// #T by 3 node indices as an int64 array.
+py::array_t<std::int64_t> to_triangle_array(const std::vector<std::array<int, 3>>& triangles) {
+  const auto t = static_cast<py::ssize_t>(triangles.size());
+  py::array_t<std::int64_t> out({t, py::ssize_t{3}});
+  auto w = out.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < t; ++i)
+    for (py::ssize_t j = 0; j < 3; ++j) w(i, j) = triangles[i][j];
+  return out;
+}
+
 // The FigureTriangulation as the dict documented on triangulate_figures
 // (FORMAT.md's triangulation object plus the triangulation's statistics).
 py::dict triangulation_dict(const sm::FigureTriangulation& triangulation,
                             const sm::FigureTriangulationStats& stats) {
-  const auto t = static_cast<py::ssize_t>(triangulation.triangles.size());
-  py::array_t<std::int64_t> triangles({t, py::ssize_t{3}});
-  auto w = triangles.mutable_unchecked<2>();
-  for (py::ssize_t i = 0; i < t; ++i)
-    for (py::ssize_t j = 0; j < 3; ++j) w(i, j) = triangulation.triangles[i][j];
+  const py::array_t<std::int64_t> triangles = to_triangle_array(triangulation.triangles);
   py::dict statistics;
   statistics["interior_faces"] = stats.interior_faces;
   statistics["cut_bends"] = stats.cut_bends;
@@ -744,11 +750,7 @@ Raises:
           triangulation = sm::compatible_triangulation(pair, options, &stats);
         }
 
-        const auto t = static_cast<py::ssize_t>(triangulation.triangles.size());
-        py::array_t<std::int64_t> triangles({t, py::ssize_t{3}});
-        auto w = triangles.mutable_unchecked<2>();
-        for (py::ssize_t i = 0; i < t; ++i)
-          for (py::ssize_t j = 0; j < 3; ++j) w(i, j) = triangulation.triangles[i][j];
+        const py::array_t<std::int64_t> triangles = to_triangle_array(triangulation.triangles);
         py::dict statistics;
         statistics["steiner_vertices"] = stats.steiner_vertices;
         statistics["spiderweb_steiner_vertices"] = stats.spiderweb_steiner_vertices;

@@ -4,9 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <vector>
 
+#include "stickmorph/compatibility.h"
 #include "stickmorph/exact_predicates.h"
 #include "stickmorph/stick_figure.h"
 
@@ -115,6 +117,28 @@ inline StickFigure random_plane_graph(std::mt19937& rng, int n, double keep_frac
   RawEdges raw;
   for (const Edge& e : kept) raw.push_back({e[0], e[1]});
   return figure(std::move(pts), raw);
+}
+
+/// `f` rotated by `angle`, scaled and moved.
+inline StickFigure moved(const StickFigure& f, double angle, double scale, double dx, double dy) {
+  StickFigure g = f;
+  const double c = std::cos(angle) * scale, s = std::sin(angle) * scale;
+  for (Vec2& p : g.vertices) p = {c * p[0] - s * p[1] + dx, s * p[0] + c * p[1] + dy};
+  return g;
+}
+
+/// A random compatible pair for round `round` of a property test: a thinned
+/// triangulation (faces of every size, trees, dangling edges) and a rotated,
+/// scaled copy with every vertex pushed a little; nothing if the pushed copy
+/// is no longer a valid figure compatible with the source.
+inline std::optional<std::pair<StickFigure, StickFigure>> random_compatible_pair(std::mt19937& rng, int round,
+                                                                                 int smallest, int spread) {
+  std::normal_distribution<double> jitter(0.0, 0.3);
+  StickFigure s = random_plane_graph(rng, smallest + round % spread, 0.25 + 0.02 * (round % 30));
+  StickFigure t = moved(s, 0.8 * round, 0.5 + 0.1 * (round % 7), round % 5, -(round % 3));
+  for (Vec2& p : t.vertices) p = {p[0] + jitter(rng), p[1] + jitter(rng)};
+  if (!is_valid(t) || !check_compatibility(s, t).compatible()) return std::nullopt;
+  return std::make_pair(std::move(s), std::move(t));
 }
 
 }  // namespace stickmorph::test

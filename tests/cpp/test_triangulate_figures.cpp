@@ -13,13 +13,6 @@ namespace {
 
 const SteinerMethod kMethods[] = {SteinerMethod::Aronov, SteinerMethod::Sg2001, SteinerMethod::Improved};
 
-StickFigure moved(const StickFigure& f, double angle, double scale, double dx, double dy) {
-  StickFigure g = f;
-  const double c = std::cos(angle) * scale, s = std::sin(angle) * scale;
-  for (Vec2& p : g.vertices) p = {c * p[0] - s * p[1] + dx, s * p[0] + c * p[1] + dy};
-  return g;
-}
-
 // Triangulates with every method and checks the result against the FORMAT.md
 // layout and the exact verifier; returns the Steiner counts.
 std::array<int, 3> check_all_methods(const StickFigure& s, const StickFigure& t, int sides = 6) {
@@ -113,18 +106,12 @@ TEST_CASE("figures far apart and at very different scales", "[triangulate_figure
 
 TEST_CASE("random compatible stick figures", "[triangulate_figures][property]") {
   std::mt19937 rng(42);
-  std::normal_distribution<double> jitter(0.0, 0.3);
   int tested = 0;
-  for (int round = 0; tested < 30 && round < 300; ++round) {
-    const StickFigure s = random_plane_graph(rng, 6 + round % 20, 0.3 + 0.02 * (round % 30));
-    // A rotated, scaled copy with every vertex pushed a little: kept only if
-    // it is still a valid figure compatible with the source.
-    StickFigure t = moved(s, 0.7 * round, 0.5 + 0.1 * (round % 7), round % 5, -(round % 3));
-    for (Vec2& p : t.vertices) p = {p[0] + jitter(rng), p[1] + jitter(rng)};
-    if (!is_valid(t) || !check_compatibility(s, t).compatible()) continue;
-    ++tested;
-    check_all_methods(s, t);
-  }
+  for (int round = 0; tested < 30 && round < 300; ++round)
+    if (const auto pair = random_compatible_pair(rng, round, 6, 20)) {
+      ++tested;
+      check_all_methods(pair->first, pair->second);
+    }
   CHECK(tested == 30);
 }
 
