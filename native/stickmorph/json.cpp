@@ -105,6 +105,33 @@ bool is_overflow(std::string_view text) {
   return found && leading_exponent > 0;
 }
 
+// Offset of the first byte that breaks strict UTF-8 (no overlong forms, no
+// surrogates, nothing above U+10FFFF), or npos.
+std::size_t invalid_utf8_offset(std::string_view bytes) {
+  std::size_t i = 0;
+  while (i < bytes.size()) {
+    const unsigned char b = static_cast<unsigned char>(bytes[i]);
+    std::size_t length;
+    unsigned lo = 0x80, hi = 0xBF;  // range of the second byte
+    if (b < 0x80) length = 1;
+    else if (b >= 0xC2 && b <= 0xDF) length = 2;
+    else if (b == 0xE0) length = 3, lo = 0xA0;
+    else if (b == 0xED) length = 3, hi = 0x9F;
+    else if (b >= 0xE1 && b <= 0xEF) length = 3;
+    else if (b == 0xF0) length = 4, lo = 0x90;
+    else if (b >= 0xF1 && b <= 0xF3) length = 4;
+    else if (b == 0xF4) length = 4, hi = 0x8F;
+    else return i;
+    if (i + length > bytes.size()) return i;
+    for (std::size_t k = 1; k < length; ++k) {
+      const unsigned char c = static_cast<unsigned char>(bytes[i + k]);
+      if (c < (k == 1 ? lo : 0x80) || c > (k == 1 ? hi : 0xBF)) return i;
+    }
+    i += length;
+  }
+  return std::string_view::npos;
+}
+
 class Parser {
  public:
   explicit Parser(std::string_view text) : text_(text) {}
@@ -296,6 +323,12 @@ class Parser {
       // Copy the run of ordinary bytes in one go.
       const std::size_t run_start = pos_;
       while (!at_end() && peek() != '"' && peek() != '\\' && peek() >= 0x20) ++pos_;
+      // RFC 8259, section 8.1: JSON text is UTF-8. A string never spans a
+      // line, so the bad byte's column follows from its offset.
+      const std::size_t bad = invalid_utf8_offset(std::string_view(text_).substr(run_start, pos_ - run_start));
+      if (bad != std::string_view::npos)
+        fail({line_, run_start + bad - line_start_ + 1},
+             "invalid UTF-8 in a string (the string starts at " + describe_location(opened) + ")");
       out.append(text_, run_start, pos_ - run_start);
       if (at_end()) fail(opened, "unterminated string");
       const unsigned char c = peek();

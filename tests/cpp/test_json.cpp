@@ -144,10 +144,21 @@ TEST_CASE("strings decode escapes and keep bytes", "[json]") {
   // U+1F600 as a surrogate pair becomes 4 bytes of UTF-8.
   CHECK(parse_json(R"("\uD83D\uDE00")").as_string() == "\xF0\x9F\x98\x80");
   CHECK(parse_json(R"("\u0000")").as_string() == std::string(1, '\0'));
-  // UTF-8 (and bytes that are not UTF-8) pass through unchanged.
+  // UTF-8 passes through unchanged.
   CHECK(parse_json("\"caf\xC3\xA9\"").as_string() == "caf\xC3\xA9");
-  CHECK(parse_json("\"\xFF\xFE\"").as_string() == "\xFF\xFE");
+  CHECK(parse_json("\"\xF0\x9F\x98\x80\"").as_string() == "\xF0\x9F\x98\x80");
   CHECK(parse_json("\"\x7F\"").as_string() == "\x7F");
+}
+
+TEST_CASE("strings must be UTF-8 (RFC 8259, section 8.1)", "[json]") {
+  // Bytes that are not UTF-8, overlong forms, encoded surrogates, code
+  // points above U+10FFFF, truncated sequences: each named by position.
+  for (const char* text : {"\"\xFF\xFE\"", "\"caf\xE9\"", "\"\xC0\xAF\"", "\"\xE0\x80\xAF\"",
+                           "\"\xED\xA0\x80\"", "\"\xF4\x90\x80\x80\"", "\"ab\xE2\x82\""}) {
+    INFO(text);
+    CHECK_THAT(parse_error(text), Contains("invalid UTF-8 in a string"));
+  }
+  CHECK_THAT(parse_error("{\"name\": \"caf\xE9\"}"), StartsWith("line 1, column 14"));
 }
 
 TEST_CASE("string errors name their position", "[json]") {
@@ -315,9 +326,11 @@ TEST_CASE("quote_json_string escapes what JSON requires", "[json][writer]") {
   CHECK(quote_json_string("a\"b\\c") == R"("a\"b\\c")");
   CHECK(quote_json_string("\n\t\x01") == R"("\n\t\u0001")");
   CHECK(quote_json_string("caf\xC3\xA9") == "\"caf\xC3\xA9\"");
-  std::string all_bytes;
-  for (int b = 1; b < 256; ++b) all_bytes += static_cast<char>(b);
-  CHECK(parse_json(quote_json_string(all_bytes)).as_string() == all_bytes);
+  // Every ASCII character and UTF-8 sequences of each length round-trip.
+  std::string all_characters;
+  for (int b = 1; b < 128; ++b) all_characters += static_cast<char>(b);
+  all_characters += "\xC3\xA9\xE2\x82\xAC\xF0\x9F\x98\x80";
+  CHECK(parse_json(quote_json_string(all_characters)).as_string() == all_characters);
 }
 
 TEST_CASE("to_json writes compact and pretty documents", "[json][writer]") {
