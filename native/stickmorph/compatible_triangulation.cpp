@@ -13,8 +13,11 @@ namespace stickmorph {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-// Smallest angle (radians) of a triangle created by redundancy removal.
-constexpr double kMinNewAngle = 1e-9;
+// Smallest angle (radians) of a triangle that the construction creates from
+// existing vertices (redundancy removal, shared diagonals). Exact arithmetic
+// would accept thinner ones whose positivity is only rounding; the morph's
+// convex weights need tan of half-angles that stay finite.
+constexpr double kMinNewAngle = 1e-6;
 
 double angle_at(const Vec2& a, const Vec2& b, const Vec2& c) {
   const double ux = b[0] - a[0], uy = b[1] - a[1];
@@ -829,11 +832,26 @@ std::set<std::pair<int, int>> common_diagonals(const PolygonPair& pair, const st
     }
   std::set<std::pair<int, int>> common;
   if (candidates.empty()) return common;
-  // In the target: leaves each end into that corner's wedge ...
+  // In the target: leaves each end into that corner's wedge, clear of the
+  // corner's edges by kMinNewAngle in both polygons (a diagonal along a
+  // nearly straight run of edges would cut off a triangle that is flat in
+  // all but rounding) ...
+  const CornerPolygon source = pair.source();
+  auto clear_of_edges = [&](const CornerPolygon& polygon, int from, int to) {
+    const Vec2& v = polygon.at(from);
+    const Vec2& q = polygon.at(to);
+    for (int neighbour : {(from + 1) % n, (from + n - 1) % n}) {
+      const Vec2& e = polygon.at(neighbour);
+      const double ux = e[0] - v[0], uy = e[1] - v[1], wx = q[0] - v[0], wy = q[1] - v[1];
+      if (std::atan2(std::abs(ux * wy - uy * wx), ux * wx + uy * wy) < kMinNewAngle) return false;
+    }
+    return true;
+  };
   auto enters = [&](int from, int to) {
     const int prev = pair.corners[(from + n - 1) % n], next = pair.corners[(from + 1) % n];
     return strictly_inside_corner(target.at(from), target.positions[next], target.positions[prev], prev == next,
-                                  target.at(to));
+                                  target.at(to)) &&
+           clear_of_edges(target, from, to) && clear_of_edges(source, from, to);
   };
   std::vector<Segment> diagonals, edges;
   std::vector<char> ok(candidates.size(), 0);

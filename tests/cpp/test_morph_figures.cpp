@@ -3,11 +3,13 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <random>
 
 #include "figures.h"
 #include "polygons.h"
 #include "stickmorph/compatibility.h"
+#include "stickmorph/figure_io.h"
 #include "stickmorph/figure_triangulation.h"
 #include "stickmorph/frame_verification.h"
 #include "stickmorph/morph.h"
@@ -92,4 +94,19 @@ TEST_CASE("random compatible stick figures morph with every frame verified", "[m
       check_morph(pair->first, pair->second, 8);
     }
   CHECK(tested == 25);
+}
+
+TEST_CASE("regression pairs in tests/data/regressions morph with every frame verified", "[morph_figures]") {
+  // Each pair once failed; see the name field of its source file.
+  int replayed = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(STICKMORPH_TEST_DATA) + "/regressions")) {
+    const std::string path = entry.path().string();
+    const std::string suffix = ".source.json";
+    if (path.size() < suffix.size() || path.compare(path.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
+    const std::string target = path.substr(0, path.size() - suffix.size()) + ".target.json";
+    INFO(path);
+    check_morph(read_figure_file(path), read_figure_file(target));
+    ++replayed;
+  }
+  CHECK(replayed >= 1);
 }
