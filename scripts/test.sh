@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs every test: the Catch2 tests of the engine and CLI
-# (through ctest) and the pytest tests of the Python module.
+# (through ctest), the pytest tests of the Python module and the CLI, and the
+# Blender add-on's tests in headless Blender.
 #
 #   scripts/test.sh           the regular suite
 #   scripts/test.sh --long    also long fuzz and stress modes, for tests that
@@ -41,5 +42,8 @@ ctest --test-dir build --output-on-failure
 
 section "Python tests (pytest)"
 STICKMORPH_BUILD_DIR="$PWD/build" "$PYTHON" -m pytest tests/python -q
+
+section "Blender add-on tests (pytest in headless Blender)"
+STICKMORPH_BUILD_DIR="$PWD/build" bash scripts/blender_tests.sh
 
 section "All tests passed"

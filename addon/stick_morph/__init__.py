@@ -1,0 +1,45 @@
+"""Stick Morph: bake self-intersection-free morphs of planar stick figures.
+
+Select two edge meshes with the same vertices and edges (the target active),
+then Object > Bake Stick Morph or View3D > Sidebar > Stick Morph. The result
+is a new object whose absolute shape keys hold the morph of Surazhsky &
+Gotsman (2001), computed by the bundled native `stickmorph` module.
+
+This file imports no bpy-dependent module at import time, so `core` can be
+imported outside Blender (tests, tools).
+"""
+
+bl_info = {
+    "name": "Stick Morph",
+    "author": "stickmorph",
+    "version": (0, 1, 0),
+    "blender": (3, 4, 0),
+    "location": "View3D > Sidebar > Stick Morph; Object > Bake Stick Morph",
+    "description": "Morph planar stick figures (edge meshes) without self-intersection, baked to shape keys",
+    "category": "Animation",
+}
+
+_modules = ()
+
+
+def _menu(self, context):
+    self.layout.operator("object.stick_morph_bake")
+
+
+def register():
+    global _modules
+    import bpy
+    from . import operators, preferences, ui
+    _modules = (preferences, operators, ui)
+    for module in _modules:
+        module.register()
+    bpy.types.VIEW3D_MT_object.append(_menu)
+
+
+def unregister():
+    global _modules
+    import bpy
+    bpy.types.VIEW3D_MT_object.remove(_menu)
+    for module in reversed(_modules):
+        module.unregister()
+    _modules = ()

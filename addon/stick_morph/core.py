@@ -1,0 +1,427 @@
+"""The add-on's geometry and engine glue, free of bpy.
+
+Everything here works on NumPy arrays and plain Python values, so it can be
+imported and tested outside Blender. The Blender side (operators.py,
+baking.py) reads meshes into arrays, calls `prepare_pair` and `compute_morph`,
+and writes the arrays back.
+
+World space and the plane
+-------------------------
+The engine morphs 2D figures. Both meshes are read in world space and
+projected onto one plane with an orthonormal basis (u, v) and normal n, u x v
+= n, so that 2D orientation is the orientation seen looking down -n. The
+projection is the same for both figures, so a mirror image in 3D stays a
+mirror image in 2D (and is refused by the engine).
+
+Each vertex also keeps its height h = n . (p - origin) in its own figure. The
+way back to world space at eased time s is
+
+    p(s) = origin + x u + y v + ((1 - s) h_source + s h_target) n
+
+so frame 0 is the source's world vertices and the last frame the target's
+(up to floating-point roundoff), including the offset between two figures
+that lie in parallel planes, e.g. side by side at different depths.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+
+PLANES = ("AUTO", "XY", "XZ", "YZ")
+EASINGS = ("LINEAR", "EASE_IN_OUT")
+STEINER_METHODS = ("improved", "sg2001", "aronov")
+WEIGHTS = ("mvc", "uniform", "floater")
+
+# Orthonormal (u, v) of the axis planes; n = u x v. XZ is seen from the front
+# (looking along +Y), YZ from the right (looking along -X), as in Blender's
+# front and right views.
+_AXIS_PLANES = {
+    "XY": ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0)),
+    "XZ": ((1.0, 0.0, 0.0), (0.0, 0.0, 1.0)),
+    "YZ": ((0.0, 1.0, 0.0), (0.0, 0.0, 1.0)),
+}
+
+# A figure deviating from its plane by more than this fraction of the size of
+# both figures (the diagonal of their common bounding box) is not planar.
+DEFAULT_PLANARITY_TOLERANCE = 1e-4
+
+# With easing, the frames are picked from a finer uniform morph of this many
+# samples per output frame interval (see ease_sample_indices).
+EASE_OVERSAMPLING = 8
+
+MAX_ENGINE_FRAMES = 100000
+
+
+class StickMorphError(Exception):
+    """A problem with the user's input, reported as an ERROR; message is for the user."""
+
+
+@dataclass
+class Plane:
+    origin: np.ndarray  # (3,)
+    u: np.ndarray  # (3,)
+    v: np.ndarray  # (3,)
+    normal: np.ndarray  # (3,)
+    name: str  # "AUTO", "XY", ...
+
+    def describe(self) -> str:
+        if self.name != "AUTO":
+            return f"the {self.name} plane"
+        n = self.normal
+        return f"the best-fit plane (normal {n[0]:.3f}, {n[1]:.3f}, {n[2]:.3f})"
+
+
+@dataclass
+class PreparedPair:
+    """Two figures ready for the engine."""
+
+    plane: Plane
+    source_xy: np.ndarray  # (V, 2) float64
+    target_xy: np.ndarray  # (V, 2) float64
+    source_h: np.ndarray  # (V,) heights above the plane
+    target_h: np.ndarray  # (V,)
+    edges: np.ndarray  # (E, 2) int64, the source mesh's edges in mesh order
+    deviation: float  # the largest distance of a vertex from its figure's plane
+    size: float  # diagonal of the common bounding box (world units)
+
+
+@dataclass
+class MorphResult:
+    times: np.ndarray  # (N,) the (eased) morph time of each output frame
+    frames_xy: np.ndarray  # (N, V, 2) engine frames, in the plane
+    frames_world: np.ndarray  # (N, V, 3) float64, world space
+    triangulation: dict | None
+    stats: dict
+    engine_frames: int  # frames the engine computed (more than N with easing)
+    sample_indices: np.ndarray  # (N,) which engine frame each output frame is
+    milliseconds: float = 0.0
+    extra: dict = field(default_factory=dict)
+
+
+# ---------------------------------------------------------------- engine ----
+
+def load_engine():
+    """The native `stickmorph` module: the copy shipped inside this package,
+    else one on sys.path (a development build)."""
+    try:
+        from . import stickmorph as engine  # type: ignore[attr-defined]
+    except ImportError:
+        try:
+            import stickmorph as engine  # type: ignore[no-redef]
+        except ImportError as e:
+            raise StickMorphError(
+                "the native stickmorph module is missing from the add-on; rebuild the "
+                "add-on with build_addon.py for this Blender's Python "
+                f"({e})") from e
+    return engine
+
+
+# ----------------------------------------------------------------- plane ----
+
+def _unit(vector) -> np.ndarray:
+    vector = np.asarray(vector, dtype=np.float64)
+    return vector / np.linalg.norm(vector)
+
+
+def _canonical_sign(vector: np.ndarray) -> np.ndarray:
+    """The vector or its negation, whichever has a positive largest component."""
+    k = int(np.argmax(np.abs(vector)))
+    return vector if vector[k] >= 0 else -vector
+
+
+def fit_plane(source_world: np.ndarray, target_world: np.ndarray, plane: str = "AUTO") -> Plane:
+    """The common plane of both figures.
+
+    AUTO: the normal is the smallest right-singular vector of both point sets,
+    each centred on its own centroid, so that two figures in parallel planes
+    (side by side at different depths) share the right normal. The normal
+    points to the same side as the nearest axis plane's (XY: +Z, XZ: -Y, YZ:
+    +X), and u is that plane's u axis projected into the fitted plane. If all
+    points are collinear, the plane holds the line and is the one closest to
+    an axis plane.
+    """
+    if plane not in PLANES:
+        raise StickMorphError(f"unknown plane {plane!r} (choose one of {', '.join(PLANES)})")
+    source_world = np.asarray(source_world, dtype=np.float64).reshape(-1, 3)
+    target_world = np.asarray(target_world, dtype=np.float64).reshape(-1, 3)
+    both = np.vstack([source_world, target_world])
+    origin = both.mean(axis=0) if len(both) else np.zeros(3)
+    if plane != "AUTO":
+        u, v = (np.array(a) for a in _AXIS_PLANES[plane])
+        return Plane(origin, u, v, np.cross(u, v), plane)
+
+    centred = np.vstack([source_world - source_world.mean(axis=0),
+                         target_world - target_world.mean(axis=0)])
+    _, singular, vt = np.linalg.svd(centred, full_matrices=True)
+    largest = singular[0] if len(singular) else 0.0
+    if largest == 0.0:
+        # Every figure is a single point: any plane; take XY.
+        u, v = (np.array(a) for a in _AXIS_PLANES["XY"])
+        return Plane(origin, u, v, np.cross(u, v), "AUTO")
+    direction = _canonical_sign(vt[0])
+    second = singular[1] if len(singular) > 1 else 0.0
+    if second <= 1e-12 * largest:
+        # Collinear: the axis most perpendicular to the line, made exactly
+        # perpendicular, is the normal.
+        axes = np.eye(3)
+        k = int(np.argmin(np.abs(axes @ direction)))
+        normal = _unit(axes[k] - (axes[k] @ direction) * direction)
+    else:
+        normal = _unit(vt[2])
+    # The in-plane axes follow the nearest axis plane: its normal's side is
+    # the viewing side and its u axis, projected into the plane, is u. A
+    # figure drawn in an axis plane thus gets exactly that plane's 2D
+    # coordinates, and a tilted one the view a user expects.
+    nearest = max(_AXIS_PLANES, key=lambda p: abs(np.cross(*_AXIS_PLANES[p]) @ normal))
+    axis_u, axis_v = (np.array(a) for a in _AXIS_PLANES[nearest])
+    if np.cross(axis_u, axis_v) @ normal < 0:
+        normal = -normal
+    u = axis_u - (axis_u @ normal) * normal
+    if np.linalg.norm(u) < 1e-6:  # cannot happen for the nearest plane; be safe
+        u = direction
+    u = _unit(u)
+    v = np.cross(normal, u)
+    return Plane(origin, u, _unit(v), normal, "AUTO")
+
+
+def project(points_world: np.ndarray, plane: Plane) -> tuple[np.ndarray, np.ndarray]:
+    """(V, 2) in-plane coordinates and (V,) heights of world points."""
+    d = np.asarray(points_world, dtype=np.float64).reshape(-1, 3) - plane.origin
+    xy = np.stack([d @ plane.u, d @ plane.v], axis=1)
+    return xy, d @ plane.normal
+
+
+def unproject(xy: np.ndarray, heights: np.ndarray, plane: Plane) -> np.ndarray:
+    """World points from in-plane coordinates (..., V, 2) and heights (..., V)."""
+    xy = np.asarray(xy, dtype=np.float64)
+    heights = np.asarray(heights, dtype=np.float64)
+    return (plane.origin + xy[..., 0:1] * plane.u + xy[..., 1:2] * plane.v
+            + heights[..., None] * plane.normal)
+
+
+def planarity_deviation(heights: np.ndarray) -> tuple[float, int]:
+    """Largest distance of a vertex from the figure's own plane (parallel to the
+    common one, through the figure's mean height), and that vertex."""
+    heights = np.asarray(heights, dtype=np.float64)
+    if len(heights) == 0:
+        return 0.0, -1
+    deviations = np.abs(heights - heights.mean())
+    k = int(np.argmax(deviations))
+    return float(deviations[k]), k
+
+
+# ----------------------------------------------------------------- edges ----
+
+def edge_set(edges) -> set[tuple[int, int]]:
+    return {(min(a, b), max(a, b)) for a, b in np.asarray(edges, dtype=np.int64).reshape(-1, 2).tolist()}
+
+
+def compare_edge_sets(source_edges, target_edges, source_name: str = "source",
+                      target_name: str = "target", limit: int = 5) -> str | None:
+    """None if both edge lists hold the same undirected edges, else a message."""
+    a, b = edge_set(source_edges), edge_set(target_edges)
+    if a == b:
+        return None
+
+    def listing(edges):
+        items = sorted(edges)
+        text = ", ".join(f"{i}-{j}" for i, j in items[:limit])
+        return text + (f" and {len(items) - limit} more" if len(items) > limit else "")
+
+    parts = []
+    if a - b:
+        parts.append(f"edges only in '{source_name}': {listing(a - b)}")
+    if b - a:
+        parts.append(f"edges only in '{target_name}': {listing(b - a)}")
+    return "the meshes have different edges (vertex i of one must be joined to the same " \
+           "vertices as vertex i of the other): " + "; ".join(parts)
+
+
+# ---------------------------------------------------------------- easing ----
+
+def ease(t, easing: str = "LINEAR"):
+    """Time remap of [0, 1] onto [0, 1]: identity or smoothstep (ease in-out)."""
+    t = np.clip(np.asarray(t, dtype=np.float64), 0.0, 1.0)
+    if easing == "LINEAR":
+        return t
+    if easing == "EASE_IN_OUT":
+        return t * t * (3.0 - 2.0 * t)
+    raise StickMorphError(f"unknown easing {easing!r} (choose one of {', '.join(EASINGS)})")
+
+
+def engine_frame_count(frame_count: int, easing: str) -> int:
+    """How many uniform frames the engine computes for `frame_count` output frames."""
+    if easing == "LINEAR":
+        return frame_count
+    return min(MAX_ENGINE_FRAMES, (frame_count - 1) * EASE_OVERSAMPLING + 1)
+
+
+def ease_sample_indices(frame_count: int, easing: str) -> np.ndarray:
+    """Which frame of the engine's uniform morph (engine_frame_count frames)
+    each output frame shows.
+
+    The engine computes frames at uniform times only, and every frame it
+    returns is verified exactly; easing therefore picks, for output frame k,
+    the engine frame nearest to the eased time ease(k / (N - 1)) from an
+    oversampled uniform morph, instead of interpolating between frames (which
+    could make an invalid figure). Linear easing is the identity. The first
+    and last frames are always the source and target.
+    """
+    m = engine_frame_count(frame_count, easing)
+    k = np.arange(frame_count, dtype=np.float64)
+    eased = ease(k / (frame_count - 1), easing)
+    return np.rint(eased * (m - 1)).astype(np.int64)
+
+
+# ------------------------------------------------------------ preparation ----
+
+def prepare_pair(source_world, source_edges, source_faces: int, source_name: str,
+                 target_world, target_edges, target_faces: int, target_name: str,
+                 plane: str = "AUTO",
+                 planarity_tolerance: float = DEFAULT_PLANARITY_TOLERANCE) -> PreparedPair:
+    """Checks two meshes (world-space vertices, edges, face counts) and projects
+    them onto their common plane. Raises StickMorphError with a user message."""
+    source_world = np.asarray(source_world, dtype=np.float64).reshape(-1, 3)
+    target_world = np.asarray(target_world, dtype=np.float64).reshape(-1, 3)
+    for name, faces in ((source_name, source_faces), (target_name, target_faces)):
+        if faces:
+            raise StickMorphError(
+                f"'{name}' has {faces} face{'s' if faces != 1 else ''}; Stick Morph needs "
+                "edge-only meshes (in Edit Mode: Delete > Only Faces)")
+    if len(source_world) != len(target_world):
+        raise StickMorphError(
+            f"different vertex counts: '{source_name}' has {len(source_world)} vertices, "
+            f"'{target_name}' has {len(target_world)}; vertex i of one corresponds to "
+            "vertex i of the other")
+    if len(source_world) == 0:
+        raise StickMorphError(f"'{source_name}' has no vertices")
+    message = compare_edge_sets(source_edges, target_edges, source_name, target_name)
+    if message:
+        raise StickMorphError(message)
+    if not (np.isfinite(source_world).all() and np.isfinite(target_world).all()):
+        raise StickMorphError("a vertex has a non-finite coordinate")
+
+    fitted = fit_plane(source_world, target_world, plane)
+    source_xy, source_h = project(source_world, fitted)
+    target_xy, target_h = project(target_world, fitted)
+    both = np.vstack([source_world, target_world])
+    size = float(np.linalg.norm(both.max(axis=0) - both.min(axis=0)))
+    worst = (0.0, -1, source_name)
+    for name, heights in ((source_name, source_h), (target_name, target_h)):
+        deviation, vertex = planarity_deviation(heights)
+        if deviation > worst[0]:
+            worst = (deviation, vertex, name)
+    limit = planarity_tolerance * size
+    if worst[0] > limit:
+        raise StickMorphError(
+            f"the meshes are not planar: vertex {worst[1]} of '{worst[2]}' is {worst[0]:.6g} "
+            f"away from {fitted.describe()} (largest deviation {worst[0]:.6g}; allowed "
+            f"{limit:.3g}, {planarity_tolerance:g} of the size {size:.6g})"
+            + ("" if plane == "AUTO" else "; try plane AUTO"))
+    edges = np.asarray(source_edges, dtype=np.int64).reshape(-1, 2)
+    return PreparedPair(fitted, source_xy, target_xy, source_h, target_h, edges, worst[0], size)
+
+
+def _figure_name(message: str, source_name: str, target_name: str) -> str:
+    """The engine's 'source: ...' / 'target: ...' prefixes, as object names."""
+    if message.startswith("source: "):
+        return f"'{source_name}': " + message[len("source: "):]
+    if message.startswith("target: "):
+        return f"'{target_name}': " + message[len("target: "):]
+    return message
+
+
+def engine_error_message(error: Exception, source_name: str, target_name: str) -> str:
+    """A user message for an exception raised by the native module."""
+    engine = load_engine()
+    text = _figure_name(str(error), source_name, target_name)
+    if isinstance(error, engine.InvalidFigureError):
+        defect = getattr(error, "defect", None) or ""
+        if defect == "crossing_edges":
+            return f"crossing edges: {text} (mesh edge indices)"
+        if defect in ("overlapping_edges", "vertex_on_edge", "coincident_vertices"):
+            return f"the figure touches itself: {text}"
+        if defect == "disconnected":
+            return f"the figure is not connected: {text}"
+        return f"invalid figure: {text}"
+    if isinstance(error, engine.IncompatibleFiguresError):
+        return f"incompatible figures: {text}"
+    if isinstance(error, engine.VerificationError):
+        return f"the morph failed exact verification: {text}"
+    if isinstance(error, engine.InternalError):
+        return f"internal error in the stickmorph engine (a bug): {text}"
+    return f"stickmorph: {text}"
+
+
+def check_pair(prepared: PreparedPair, source_name: str, target_name: str) -> None:
+    """Engine validation and compatibility, with messages naming the objects.
+    Raises StickMorphError."""
+    engine = load_engine()
+    try:
+        report = engine.check_compatibility(prepared.source_xy, prepared.target_xy, prepared.edges)
+    except engine.StickMorphError as e:
+        raise StickMorphError(engine_error_message(e, source_name, target_name)) from e
+    if not report:
+        vertices = ", ".join(str(v) for v in report.vertices)
+        where = f" (vertex {vertices})" if len(report.vertices) == 1 else (
+            f" (vertices {vertices})" if vertices else "")
+        if report.kind == "mirror_image":
+            raise StickMorphError(
+                f"incompatible figures: '{target_name}' is a mirror image of '{source_name}'"
+                f"{where}: {report.reason}")
+        raise StickMorphError(
+            f"incompatible figures '{source_name}' and '{target_name}'{where}: {report.reason}")
+
+
+def compute_morph(prepared: PreparedPair, frame_count: int, *, steiner: str = "improved",
+                  weights: str = "mvc", enclosure_sides: int = 6, easing: str = "LINEAR",
+                  source_name: str = "source", target_name: str = "target",
+                  verify: bool = True) -> MorphResult:
+    """The morph's frames in world space. Raises StickMorphError."""
+    if frame_count < 2:
+        raise StickMorphError(f"at least 2 frames are needed, got {frame_count}")
+    if easing not in EASINGS:
+        raise StickMorphError(f"unknown easing {easing!r}")
+    engine = load_engine()
+    m = engine_frame_count(frame_count, easing)
+    start = time.perf_counter()
+    try:
+        result = engine.morph(prepared.source_xy, prepared.target_xy, prepared.edges, frames=m,
+                              steiner=steiner, weights=weights, enclosure_sides=enclosure_sides,
+                              method="barycentric", verify=verify)
+    except (engine.StickMorphError, engine.InternalError) as e:
+        raise StickMorphError(engine_error_message(e, source_name, target_name)) from e
+    milliseconds = (time.perf_counter() - start) * 1000.0
+    indices = ease_sample_indices(frame_count, easing)
+    frames_xy = np.asarray(result["frames"])[indices]
+    times = np.asarray(result["times"])[indices]
+    heights = ((1.0 - times)[:, None] * prepared.source_h[None, :]
+               + times[:, None] * prepared.target_h[None, :])
+    frames_world = unproject(frames_xy, heights, prepared.plane)
+    return MorphResult(times, frames_xy, frames_world, result["triangulation"], result["stats"], m,
+                       indices, milliseconds)
+
+
+def triangulation_world(triangulation: dict, prepared: PreparedPair) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The compatible triangulation's nodes in world space, in the source and in
+    the target, and its triangles. Figure vertices keep their own heights;
+    enclosure and Steiner nodes get the mean height of their figure."""
+    n = int(triangulation["figure_vertices"])
+    source = np.asarray(triangulation["source"], dtype=np.float64)
+    target = np.asarray(triangulation["target"], dtype=np.float64)
+    count = len(source)
+    hs = np.full(count, prepared.source_h.mean())
+    ht = np.full(count, prepared.target_h.mean())
+    hs[:n] = prepared.source_h
+    ht[:n] = prepared.target_h
+    return (unproject(source, hs, prepared.plane), unproject(target, ht, prepared.plane),
+            np.asarray(triangulation["triangles"], dtype=np.int64))
+
+
+def tube_radius(size: float, factor: float) -> float:
+    """Radius of the renderable tubes: a fraction of the figures' size."""
+    return max(size * factor, 1e-6) if math.isfinite(size) and size > 0 else factor

@@ -1,0 +1,140 @@
+"""Add-on preferences: the defaults of the bake options.
+
+The option properties are defined once here (option_properties) and shared by
+the preferences, the operator and the sidebar's per-scene settings.
+"""
+
+import bpy
+from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty, PointerProperty, StringProperty
+
+from . import core
+
+# The options copied from the preferences into an operator call (when the
+# caller did not set them) and into the scene settings (Load Defaults).
+OPTION_NAMES = ("frame_count", "steiner", "weights", "enclosure_sides", "plane", "easing",
+                "renderable", "tube_radius", "show_triangulation", "planarity_tolerance",
+                "set_frame_range")
+
+
+def option_properties():
+    """Fresh property definitions for the bake options (a dict for __annotations__)."""
+    return {
+        "frame_count": IntProperty(
+            name="Frames", description="Number of frames of the morph, source and target included",
+            default=50, min=2, max=core.MAX_ENGINE_FRAMES, soft_max=1000),
+        "steiner": EnumProperty(
+            name="Steiner", description="How the compatible triangulation places Steiner vertices",
+            items=(("improved", "Improved", "Fewest Steiner vertices (section 4.2 and further)"),
+                   ("sg2001", "SG2001", "The reduced spiderweb of Surazhsky & Gotsman 2001"),
+                   ("aronov", "Aronov", "The universal spiderweb of Aronov, Seidel & Souvaine")),
+            default="improved"),
+        "weights": EnumProperty(
+            name="Weights", description="Convex-combination weights of the Floater-Gotsman morph",
+            items=(("mvc", "Mean Value", "Mean value coordinates"),
+                   ("uniform", "Uniform", "Uniform (Tutte) weights"),
+                   ("floater", "Floater", "Floater's shape-preserving weights")),
+            default="mvc"),
+        "enclosure_sides": IntProperty(
+            name="Enclosure Sides", description="Sides of the regular polygon enclosing both figures",
+            default=6, min=3, soft_max=64),
+        "plane": EnumProperty(
+            name="Plane", description="The plane the figures are drawn in",
+            items=(("AUTO", "Auto", "The best-fit plane of both meshes"),
+                   ("XY", "XY", "The XY plane (seen from above)"),
+                   ("XZ", "XZ", "The XZ plane (seen from the front)"),
+                   ("YZ", "YZ", "The YZ plane (seen from the right)")),
+            default="AUTO"),
+        "easing": EnumProperty(
+            name="Easing", description="Time remap of the morph",
+            items=(("LINEAR", "Linear", "Constant speed"),
+                   ("EASE_IN_OUT", "Ease In-Out", "Slow at the start and the end (smoothstep)")),
+            default="LINEAR"),
+        "renderable": BoolProperty(
+            name="Renderable", description="Give the edges geometry (Geometry Nodes tubes) so that they render",
+            default=True),
+        "tube_radius": FloatProperty(
+            name="Tube Radius", description="Tube radius as a fraction of the figures' size",
+            default=0.01, min=1e-5, max=1.0, soft_max=0.1, precision=4),
+        "show_triangulation": BoolProperty(
+            name="Show Triangulation",
+            description="Add a wireframe helper object with the compatible triangulation "
+                        "(source shape, with a Target shape key)",
+            default=False),
+        "planarity_tolerance": FloatProperty(
+            name="Planarity Tolerance",
+            description="Largest allowed distance of a vertex from the plane, as a fraction of the figures' size",
+            default=core.DEFAULT_PLANARITY_TOLERANCE, min=0.0, max=0.5, precision=6),
+        "set_frame_range": BoolProperty(
+            name="Set Frame Range", description="Set the scene's frame range to the morph's frames",
+            default=True),
+    }
+
+
+def addon_preferences(context):
+    addon = context.preferences.addons.get(__package__)
+    return addon.preferences if addon is not None else None
+
+
+class StickMorphPreferences(bpy.types.AddonPreferences):
+    bl_idname = __package__
+    __annotations__ = option_properties()
+
+    def draw(self, context):
+        layout = self.layout
+        layout.label(text="Defaults of the Stick Morph bake options:")
+        layout.use_property_split = True
+        for name in OPTION_NAMES:
+            layout.prop(self, name)
+
+
+def _is_mesh(self, obj):
+    return obj.type == "MESH"
+
+
+class StickMorphSceneSettings(bpy.types.PropertyGroup):
+    """Per-scene choices of the sidebar panel and the last bake's statistics."""
+    __annotations__ = {
+        **option_properties(),
+        "source": PointerProperty(name="Source", type=bpy.types.Object, poll=_is_mesh,
+                                  description="Edge mesh the morph starts from (empty: the selected non-active mesh)"),
+        "target": PointerProperty(name="Target", type=bpy.types.Object, poll=_is_mesh,
+                                  description="Edge mesh the morph ends at (empty: the active object)"),
+        "frame_start": IntProperty(name="Start Frame", default=1),
+        "last_result": StringProperty(name="Last Result"),
+        "last_vertices": IntProperty(name="Vertices"),
+        "last_steiner": IntProperty(name="Steiner Vertices"),
+        "last_frames": IntProperty(name="Frames"),
+        "last_milliseconds": FloatProperty(name="Milliseconds"),
+    }
+
+
+class STICKMORPH_OT_load_defaults(bpy.types.Operator):
+    """Copy the add-on preferences' defaults into this scene's Stick Morph options"""
+    bl_idname = "scene.stick_morph_load_defaults"
+    bl_label = "Load Defaults"
+    bl_options = {"REGISTER", "UNDO"}
+
+    def execute(self, context):
+        prefs = addon_preferences(context)
+        if prefs is None:
+            self.report({"ERROR"}, "Stick Morph preferences are not available")
+            return {"CANCELLED"}
+        settings = context.scene.stick_morph
+        for name in OPTION_NAMES:
+            setattr(settings, name, getattr(prefs, name))
+        return {"FINISHED"}
+
+
+classes = (StickMorphPreferences, StickMorphSceneSettings, STICKMORPH_OT_load_defaults)
+
+
+def register():
+    for cls in classes:
+        bpy.utils.register_class(cls)
+    bpy.types.Scene.stick_morph = PointerProperty(type=StickMorphSceneSettings)
+
+
+def unregister():
+    del bpy.types.Scene.stick_morph
+    for cls in reversed(classes):
+        bpy.utils.unregister_class(cls)

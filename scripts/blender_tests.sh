@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Builds the Blender add-on zip and runs its tests inside headless Blender.
+#
+#   scripts/blender_tests.sh [pytest args]
+#
+# 1. /usr/bin/python3 build_addon.py: builds the native module for Blender's
+#    Python (in $STICKMORPH_BUILD_DIR, default build-addon/) and writes
+#    dist/stick_morph-<version>.zip.
+# 2. tests/blender/run_pytest.py in `blender -b --factory-startup`: installs
+#    and enables that zip in a temporary user config, bakes, checks, renders.
+# Exits non-zero if the build or any test fails; pytest prints its summary line.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+BLENDER="${BLENDER:-blender}"
+PYTHON=/usr/bin/python3
+# scripts/test.sh passes its own build directory so the engine is built once.
+BUILD_DIR="${STICKMORPH_BUILD_DIR:-build-addon}"
+
+printf '\n==== %s ====\n' "Blender add-on: build"
+"$PYTHON" build_addon.py --blender "$BLENDER" --build-dir "$BUILD_DIR"
+
+printf '\n==== %s ====\n' "Blender add-on: tests (pytest in headless Blender)"
+"$BLENDER" -b --factory-startup --python-exit-code 1 --python tests/blender/run_pytest.py -- -q -ra "$@"

@@ -1,0 +1,185 @@
+"""Fixtures for the add-on tests that run inside Blender (see run_pytest.py)."""
+
+import glob
+import math
+import os
+import sys
+
+import bpy
+import numpy as np
+import pytest
+from mathutils import Matrix
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SANDBOX = os.environ.get("STICKMORPH_BLENDER_SANDBOX")
+
+
+def addon_zip():
+    path = os.environ.get("STICKMORPH_ADDON_ZIP")
+    if path:
+        return path
+    candidates = sorted(glob.glob(os.path.join(ROOT, "dist", "stick_morph-*.zip")), key=os.path.getmtime)
+    if not candidates:
+        pytest.fail("no dist/stick_morph-*.zip: run python3 build_addon.py first")
+    return candidates[-1]
+
+
+@pytest.fixture(scope="session")
+def addon():
+    """Installs the built zip into the sandboxed user scripts folder and enables it;
+    returns the add-on package (stick_morph)."""
+    if not SANDBOX:
+        pytest.fail("run through tests/blender/run_pytest.py (a sandboxed user config)")
+    scripts = bpy.utils.user_resource("SCRIPTS")
+    assert os.path.realpath(scripts).startswith(os.path.realpath(SANDBOX)), scripts
+    assert "stick_morph" not in sys.modules
+    result = bpy.ops.preferences.addon_install(filepath=addon_zip(), overwrite=True)
+    assert result == {"FINISHED"}
+    result = bpy.ops.preferences.addon_enable(module="stick_morph")
+    assert result == {"FINISHED"}
+    import stick_morph
+    # Loaded from the installed copy, with its bundled native module.
+    assert os.path.realpath(stick_morph.__file__).startswith(os.path.realpath(SANDBOX))
+    from stick_morph import core
+    engine = core.load_engine()
+    assert os.path.realpath(engine.__file__).startswith(os.path.realpath(SANDBOX)), engine.__file__
+    assert hasattr(bpy.types, "OBJECT_OT_stick_morph_bake") or hasattr(bpy.ops.object, "stick_morph_bake")
+    return stick_morph
+
+
+@pytest.fixture
+def scene(addon):
+    """An empty scene (the add-on stays enabled)."""
+    bpy.ops.wm.read_homefile(use_empty=True)
+    assert "stick_morph" in bpy.context.preferences.addons
+    return bpy.context.scene
+
+
+# ---------------------------------------------------------------- figures ----
+# 2D figures (source, target, edges): compatible pairs never seen by the engine's tests.
+
+POLYLINE = (
+    [[0, 0], [1, 0.3], [2, -0.2], [3, 0.5], [4, 0]],
+    [[0, 0], [0.8, 1.0], [0.2, 2.0], [1.4, 2.6], [2.5, 2.2]],
+    [[0, 1], [1, 2], [2, 3], [3, 4]],
+)
+
+# A tree: a junction at 0 with three arms, two edges each.
+TREE = (
+    [[0, 0], [1, 0], [2, 0.2], [-0.5, 0.9], [-1.0, 1.8], [-0.5, -0.9], [-0.8, -1.9]],
+    [[0, 0], [0.9, 0.5], [1.5, 1.3], [-0.9, 0.4], [-1.9, 0.2], [0.1, -1.0], [0.9, -1.6]],
+    [[0, 1], [1, 2], [0, 3], [3, 4], [0, 5], [5, 6]],
+)
+
+# A quadrilateral with a dangling edge inside; the target is not convex.
+POLYGON_DANGLING = (
+    [[0, 0], [2, 0], [2, 2], [0, 2], [1, 1]],
+    [[0, 0], [3, 0], [1.5, 0.8], [0, 2.5], [0.6, 0.9]],
+    [[0, 1], [1, 2], [2, 3], [3, 0], [0, 4]],
+)
+
+PAIRS = {"polyline": POLYLINE, "tree": TREE, "polygon_dangling": POLYGON_DANGLING}
+
+# The plane both figures lie in: tilted about two axes.
+TILT = Matrix.Rotation(0.6, 4, "X") @ Matrix.Rotation(-0.35, 4, "Y")
+
+
+def source_matrix():
+    return Matrix.Translation((1.0, -2.0, 0.5)) @ TILT @ Matrix.Diagonal((1.5, 1.5, 1.5, 1.0))
+
+
+def target_matrix():
+    # The same plane orientation, turned within the plane, scaled, and moved
+    # along the plane's normal too (a parallel plane).
+    normal = (np.array(TILT.to_3x3()) @ np.array([0.0, 0.0, 1.0]))
+    offset = Matrix.Translation(tuple(np.array([4.0, 1.0, -0.5]) + 0.7 * np.array(normal)))
+    return offset @ TILT @ Matrix.Rotation(0.4, 4, "Z") @ Matrix.Diagonal((0.8, 0.8, 0.8, 1.0))
+
+
+def make_mesh_object(name, xy, edges, matrix=None, faces=(), z=None):
+    coords = np.zeros((len(xy), 3))
+    coords[:, :2] = np.asarray(xy, dtype=np.float64)
+    if z is not None:
+        coords[:, 2] = z
+    mesh = bpy.data.meshes.new(name)
+    mesh.from_pydata(coords.tolist(), [tuple(e) for e in edges] if not faces else [], list(faces))
+    mesh.update()
+    obj = bpy.data.objects.new(name, mesh)
+    bpy.context.scene.collection.objects.link(obj)
+    if matrix is not None:
+        obj.matrix_world = matrix
+    return obj
+
+
+def make_pair(key, source_name="Source", target_name="Target", tilted=True):
+    source_xy, target_xy, edges = PAIRS[key]
+    source = make_mesh_object(source_name, source_xy, edges, source_matrix() if tilted else None)
+    target = make_mesh_object(target_name, target_xy, edges, target_matrix() if tilted else None)
+    bpy.context.view_layer.update()
+    select(source, target)
+    return source, target
+
+
+def select(*objects, active=None):
+    for obj in bpy.context.view_layer.objects:
+        obj.select_set(False)
+    for obj in objects:
+        obj.select_set(True)
+    bpy.context.view_layer.objects.active = active if active is not None else (objects[-1] if objects else None)
+
+
+def world_coords(obj):
+    """World coordinates of a mesh object's own vertices, computed here (not by the add-on)."""
+    matrix = np.array(obj.matrix_world)
+    co = np.array([v.co[:] for v in obj.data.vertices], dtype=np.float64)
+    return co @ matrix[:3, :3].T + matrix[:3, 3]
+
+
+def evaluated_world(obj, frame):
+    """The evaluated mesh (shape keys only: modifiers off) at a frame, in world space."""
+    scene = bpy.context.scene
+    saved = [(m, m.show_viewport) for m in obj.modifiers]
+    for modifier, _ in saved:
+        modifier.show_viewport = False
+    try:
+        scene.frame_set(frame)
+        depsgraph = bpy.context.evaluated_depsgraph_get()
+        evaluated = obj.evaluated_get(depsgraph)
+        mesh = evaluated.to_mesh()
+        co = np.empty(len(mesh.vertices) * 3, dtype=np.float32)
+        mesh.vertices.foreach_get("co", co)
+        matrix = np.array(evaluated.matrix_world)
+        evaluated.to_mesh_clear()
+    finally:
+        for modifier, shown in saved:
+            modifier.show_viewport = shown
+    return co.reshape(-1, 3).astype(np.float64) @ matrix[:3, :3].T + matrix[:3, 3]
+
+
+def snapshot():
+    """Everything an operator could change in the file, for before/after comparison."""
+    def matrix(obj):
+        return tuple(round(x, 9) for row in obj.matrix_world for x in row)
+
+    def coords(mesh):
+        co = np.empty(len(mesh.vertices) * 3, dtype=np.float32)
+        mesh.vertices.foreach_get("co", co)
+        return co.tobytes()
+
+    scene = bpy.context.scene
+    view_layer = bpy.context.view_layer
+    return {
+        "objects": sorted((o.name, o.type, o.data.name if o.data else None, matrix(o), o.select_get(),
+                           tuple(m.name for m in o.modifiers), tuple(sorted(o.keys())))
+                          for o in bpy.data.objects),
+        "meshes": sorted((m.name, len(m.vertices), len(m.edges), len(m.polygons), coords(m),
+                          m.shape_keys.name if m.shape_keys else None) for m in bpy.data.meshes),
+        "shape_keys": sorted(k.name for k in bpy.data.shape_keys),
+        "actions": sorted(a.name for a in bpy.data.actions),
+        "node_groups": sorted(g.name for g in bpy.data.node_groups),
+        "materials": sorted(m.name for m in bpy.data.materials),
+        "collections": sorted((c.name, tuple(sorted(o.name for o in c.objects))) for c in bpy.data.collections),
+        "scene_objects": tuple(sorted(o.name for o in scene.collection.objects)),
+        "active": view_layer.objects.active.name if view_layer.objects.active else None,
+        "frames": (scene.frame_start, scene.frame_end, scene.frame_current),
+    }

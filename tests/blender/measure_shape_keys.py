@@ -1,0 +1,71 @@
+"""Measures the two ways of baking a morph into shape keys (not a test).
+
+    blender -b --factory-startup --python tests/blender/measure_shape_keys.py
+
+absolute:  absolute shape keys, one per frame, on an eval_time F-curve
+relative:  a basis and one relative key per frame, value 1 on its frame only
+           (constant interpolation)
+
+For each size it prints the bake time (keys and keyframes), the time of
+scene.frame_set per frame with the shape keys evaluated, and the largest
+difference between the evaluated mesh and the frame that was baked. The
+results are quoted in addon/stick_morph/baking.py.
+"""
+
+import os
+import sys
+import time
+
+import bpy
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "addon"))
+from stick_morph import baking  # noqa: E402
+
+
+def synthetic_frames(frames, vertices):
+    t = np.linspace(0.0, 1.0, frames)[:, None]
+    s = np.linspace(0.0, 2 * np.pi, vertices)[None, :]
+    out = np.zeros((frames, vertices, 3))
+    out[..., 0] = s * (1 + 0.3 * t)
+    out[..., 1] = np.sin(s + 3 * t)
+    return out
+
+
+def measure(bake, frames, vertices):
+    bpy.ops.wm.read_homefile(use_empty=True)
+    data = synthetic_frames(frames, vertices)
+    edges = np.stack([np.arange(vertices - 1), np.arange(1, vertices)], axis=1)
+    mesh = baking._new_mesh("m", data[0], edges)
+    obj = bpy.data.objects.new("m", mesh)
+    bpy.context.scene.collection.objects.link(obj)
+    start = time.perf_counter()
+    bake(obj, data, 1)
+    bake_ms = (time.perf_counter() - start) * 1000
+    scene = bpy.context.scene
+    depsgraph = bpy.context.evaluated_depsgraph_get()
+    worst = 0.0
+    start = time.perf_counter()
+    for k in range(frames):
+        scene.frame_set(1 + k)
+        evaluated = obj.evaluated_get(depsgraph)
+        if k % max(1, frames // 10) == 0:
+            m = evaluated.to_mesh()
+            co = np.empty(vertices * 3, dtype=np.float32)
+            m.vertices.foreach_get("co", co)
+            evaluated.to_mesh_clear()
+            worst = max(worst, float(np.abs(co.reshape(-1, 3) - data[k]).max()))
+    step_ms = (time.perf_counter() - start) * 1000 / frames
+    return bake_ms, step_ms, worst
+
+
+def main():
+    print(f"Blender {bpy.app.version_string}")
+    print(f"{'frames x vertices':>18} {'method':>9} {'bake ms':>9} {'step ms':>8} {'max error':>10}")
+    for frames, vertices in ((100, 1000), (400, 1000), (400, 10000)):
+        for name, bake in (("absolute", baking.bake_absolute_keys), ("relative", baking.bake_relative_keys)):
+            bake_ms, step_ms, worst = measure(bake, frames, vertices)
+            print(f"{frames:>8} x {vertices:<7} {name:>9} {bake_ms:9.0f} {step_ms:8.2f} {worst:10.2e}", flush=True)
+
+
+main()

@@ -1,0 +1,57 @@
+"""Runs the add-on's pytest tests inside Blender.
+
+    blender -b --factory-startup --python-exit-code 1 --python tests/blender/run_pytest.py -- [pytest args]
+
+The tests install the built zip (dist/stick_morph-*.zip, or $STICKMORPH_ADDON_ZIP)
+into Blender's user scripts folder. So that the real user configuration is
+never touched, this script first re-launches Blender with BLENDER_USER_SCRIPTS
+and BLENDER_USER_CONFIG pointing into a temporary folder, and runs pytest
+there. Blender's exit code is pytest's; "no tests collected" (5) counts as a
+failure.
+"""
+
+import os
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SANDBOX = "STICKMORPH_BLENDER_SANDBOX"
+
+
+def pytest_args():
+    return sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+
+
+def relaunch_in_sandbox():
+    import bpy
+    with tempfile.TemporaryDirectory(prefix="stickmorph-blender-") as tmp:
+        env = dict(os.environ)
+        env.update({
+            "BLENDER_USER_SCRIPTS": os.path.join(tmp, "scripts"),
+            "BLENDER_USER_CONFIG": os.path.join(tmp, "config"),
+            "BLENDER_USER_DATAFILES": os.path.join(tmp, "datafiles"),
+            SANDBOX: tmp,
+        })
+        command = [bpy.app.binary_path, "-b", "--factory-startup", "--python-exit-code", "1",
+                   "--python", os.path.abspath(__file__), "--", *pytest_args()]
+        return subprocess.call(command, env=env)
+
+
+def run_pytest():
+    import pytest
+    args = pytest_args()
+    # Test paths given (tests/blender/test_bake.py::test_x)? Else all of tests/blender.
+    if not any(os.path.exists(a.split("::")[0]) for a in args if not a.startswith("-")):
+        args = [HERE, *args]
+    code = int(pytest.main(["-p", "no:cacheprovider", "-o", "console_output_style=classic", *args]))
+    if code == 5:
+        print("run_pytest.py: no tests were collected; that counts as a failure", flush=True)
+        code = 1
+    return code
+
+
+if __name__ == "__main__":
+    if not os.environ.get(SANDBOX):
+        sys.exit(relaunch_in_sandbox())
+    sys.exit(run_pytest())

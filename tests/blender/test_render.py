@@ -1,0 +1,92 @@
+"""The saved baked file renders visible geometry in a Blender without the add-on."""
+
+import os
+import subprocess
+import tempfile
+
+import bpy
+import numpy as np
+from mathutils import Matrix
+
+from conftest import make_pair, world_coords
+
+CHECK_NO_ADDON = """
+import sys, bpy
+assert "stick_morph" not in bpy.context.preferences.addons, "add-on enabled"
+assert not any(m == "stick_morph" or m.startswith("stick_morph.") for m in sys.modules), "add-on loaded"
+for key in bpy.data.shape_keys:
+    assert key.animation_data is None or len(key.animation_data.drivers) == 0
+for name in dir(bpy.app.handlers):
+    handlers = getattr(bpy.app.handlers, name)
+    if isinstance(handlers, list):
+        assert not [h for h in handlers if "stick" in getattr(h, "__module__", "")], name
+assert bpy.context.scene.render.engine == "BLENDER_WORKBENCH"
+print("STICKMORPH_NO_ADDON_OK")
+"""
+
+
+def alpha_pixels(path):
+    image = bpy.data.images.load(path)
+    try:
+        width, height = image.size
+        assert (width, height) == (160, 120)
+        pixels = np.empty(width * height * 4, dtype=np.float32)
+        image.pixels.foreach_get(pixels)
+        return pixels.reshape(height, width, 4)
+    finally:
+        bpy.data.images.remove(image)
+
+
+def test_saved_file_renders_without_the_addon(scene, addon):
+    source, target = make_pair("tree")
+    frame_count = 10
+    assert bpy.ops.object.stick_morph_bake(frame_count=frame_count, frame_start=1) == {"FINISHED"}
+    result = bpy.context.view_layer.objects.active
+
+    # An orthographic camera looking straight at the figures' plane.
+    fitted = addon.core.fit_plane(world_coords(source), world_coords(target), "AUTO")
+    both = np.vstack([world_coords(source), world_coords(target)])
+    size = float(np.linalg.norm(both.max(axis=0) - both.min(axis=0)))
+    camera = bpy.data.objects.new("Camera", bpy.data.cameras.new("Camera"))
+    scene.collection.objects.link(camera)
+    rotation = Matrix(np.stack([fitted.u, fitted.v, fitted.normal], axis=1).tolist())
+    camera.matrix_world = Matrix.Translation(tuple(fitted.origin + 3 * size * fitted.normal)) @ rotation.to_4x4()
+    camera.data.type = "ORTHO"
+    camera.data.ortho_scale = 1.2 * size
+    camera.data.clip_end = 10 * size
+    scene.camera = camera
+    scene.render.engine = "BLENDER_WORKBENCH"
+    scene.render.resolution_x, scene.render.resolution_y = 160, 120
+    scene.render.resolution_percentage = 100
+    scene.render.film_transparent = True
+    scene.render.image_settings.file_format = "PNG"
+    scene.render.image_settings.color_mode = "RGBA"
+
+    with tempfile.TemporaryDirectory(prefix="stickmorph-render-") as tmp:
+        blend = os.path.join(tmp, "baked.blend")
+        bpy.ops.wm.save_as_mainfile(filepath=blend, copy=True)
+        # A fresh Blender with a user config of its own: the add-on is neither
+        # installed nor enabled there.
+        env = dict(os.environ, BLENDER_USER_SCRIPTS=os.path.join(tmp, "scripts"),
+                   BLENDER_USER_CONFIG=os.path.join(tmp, "config"))
+        env.pop("STICKMORPH_BLENDER_SANDBOX", None)
+        frames = (1, frame_count)
+        command = [bpy.app.binary_path, "-b", "--factory-startup", blend, "--python-exit-code", "1",
+                   "--python-expr", CHECK_NO_ADDON, "-o", os.path.join(tmp, "frame_####"),
+                   "-F", "PNG", "-f", ",".join(map(str, frames))]
+        run = subprocess.run(command, env=env, capture_output=True, text=True, timeout=300)
+        assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
+        assert "STICKMORPH_NO_ADDON_OK" in run.stdout
+        images = []
+        for frame in frames:
+            path = os.path.join(tmp, f"frame_{frame:04d}.png")
+            assert os.path.exists(path), run.stdout[-3000:]
+            images.append(alpha_pixels(path))
+    for frame, image in zip(frames, images):
+        covered = int((image[..., 3] > 0.5).sum())
+        print(f"frame {frame}: {covered} figure pixels of {160 * 120}")
+        assert covered > 100, f"frame {frame}: only {covered} figure pixels"
+        assert covered < 0.6 * 160 * 120, f"frame {frame}: {covered} pixels, not a stick figure"
+    # The figure moved: the two frames differ.
+    assert ((images[0][..., 3] > 0.5) != (images[1][..., 3] > 0.5)).sum() > 50
+    assert result.name in bpy.data.objects
