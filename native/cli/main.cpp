@@ -289,9 +289,15 @@ int run_morph(const ParsedArguments& arguments) {
   cli::write_file_atomically(output, morph_document(source, result.times, result.frames, &triangulation,
                                                     triangulate_ms, morph_ms, method, options, tri_options,
                                                     &result.stats, nullptr));
-  if (svg)
+  if (svg && option_value(arguments, "--svg-compare-linear")) {
+    std::vector<int> invalid;
+    const MorphResult linear = linear_morph(source, target, options.frames, &invalid);
+    cli::write_file_atomically(*svg, comparison_filmstrip_svg(source, result.frames, linear.frames, result.times, 7,
+                                                              invalid, title));
+  } else if (svg) {
     cli::write_file_atomically(*svg, filmstrip_svg(source, result.frames, result.times, 7,
                                                    overlay ? &triangulation : nullptr, title));
+  }
   return kExitSuccess;
 }
 
@@ -330,7 +336,8 @@ const std::vector<CommandSpec>& commands() {
         {"--method", "", "NAME", "barycentric (default) or linear (straight-line baseline, Fig. 8d)"},
         {"--no-verify", "", "", "skip the exact check of every frame"},
         {"--svg", "", "FILE", "also draw a filmstrip of about seven frames"},
-        {"--svg-triangulation", "", "", "draw the triangulation under the filmstrip's figures"}},
+        {"--svg-triangulation", "", "", "draw the triangulation under the filmstrip's figures"},
+        {"--svg-compare-linear", "", "", "draw the straight-line morph as a second filmstrip row (Figure 8d)"}},
        "morph one stick figure into a compatible one",
        "Morphs SOURCE into TARGET (Surazhsky & Gotsman 2001, Algorithm 3): both are\n"
        "embedded in one compatible triangulation of a common convex enclosure, whose\n"

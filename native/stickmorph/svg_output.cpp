@@ -125,27 +125,67 @@ std::string triangulation_svg(const FigureTriangulation& tri, const StickFigure&
   return out.str();
 }
 
-std::string filmstrip_svg(const StickFigure& source, const std::vector<std::vector<Vec2>>& frames,
-                          const std::vector<double>& times, int snapshots, const FigureTriangulation* tri,
-                          const std::string& title) {
-  const int count = int(frames.size());
+namespace {
+
+// Snapshot frame indices spread evenly from first to last.
+std::vector<int> snapshot_frames(int count, int snapshots) {
   snapshots = std::max(2, std::min(snapshots, count));
   std::vector<int> chosen;
   for (int i = 0; i < snapshots; ++i) chosen.push_back(int(std::lround(double(i) * (count - 1) / (snapshots - 1))));
-  // One scale for every snapshot, so motion and size changes show.
-  const std::size_t n = source.vertices.size();
+  return chosen;
+}
+
+// One row of snapshots at height `row_y`, all drawn at the scale of `sets`
+// so that motion and size changes show; `marked` snapshots get a red
+// caption (the straight-line morph's self-intersecting frames).
+void draw_filmstrip_row(std::ostringstream& out, const StickFigure& source, const std::vector<std::vector<Vec2>>& frames,
+                        const std::vector<double>& times, const std::vector<int>& chosen,
+                        const std::vector<const std::vector<Vec2>*>& sets, std::size_t count,
+                        const FigureTriangulation* tri, double row_y, const std::string& label,
+                        const std::vector<int>* marked) {
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    const int f = chosen[i];
+    const Frame frame(sets, count, double(i) * kPanel, row_y);
+    if (tri) draw_triangles(out, frame, frames[f], tri->triangles);
+    draw_figure(out, frame, source, frames[f], blend(times[f]), 2.0, false);
+    const bool bad = marked && std::find(marked->begin(), marked->end(), f) != marked->end();
+    std::string text = label + "t = " + number(times[f]);
+    if (bad) text += " (self-intersects)";
+    out << "<text x=\"" << number(double(i) * kPanel + kPanel / 2) << "\" y=\"" << number(row_y + kPanel + 16)
+        << "\" font-family=\"sans-serif\" font-size=\"12\" text-anchor=\"middle\" fill=\""
+        << (bad ? "#c00000" : "black") << "\">" << escape(text) << "</text>\n";
+  }
+}
+
+}  // namespace
+
+std::string filmstrip_svg(const StickFigure& source, const std::vector<std::vector<Vec2>>& frames,
+                          const std::vector<double>& times, int snapshots, const FigureTriangulation* tri,
+                          const std::string& title) {
+  const std::vector<int> chosen = snapshot_frames(int(frames.size()), snapshots);
   std::vector<const std::vector<Vec2>*> sets;
   for (int f : chosen) sets.push_back(&frames[f]);
   std::ostringstream out;
-  out << header(snapshots * kPanel, kPanel + 24, title);
-  for (int i = 0; i < snapshots; ++i) {
-    const int f = chosen[i];
-    const Frame frame(sets, tri ? std::size_t(tri->node_count()) : n, i * kPanel, 0);
-    if (tri) draw_triangles(out, frame, frames[f], tri->triangles);
-    const double t = times[f];
-    draw_figure(out, frame, source, frames[f], blend(t), 2.0, false);
-    caption(out, i * kPanel + kPanel / 2, kPanel + 16, "t = " + number(t));
-  }
+  out << header(double(chosen.size()) * kPanel, kPanel + 24, title);
+  draw_filmstrip_row(out, source, frames, times, chosen, sets,
+                     tri ? std::size_t(tri->node_count()) : source.vertices.size(), tri, 0, "", nullptr);
+  out << "</svg>\n";
+  return out.str();
+}
+
+std::string comparison_filmstrip_svg(const StickFigure& source, const std::vector<std::vector<Vec2>>& ours,
+                                     const std::vector<std::vector<Vec2>>& linear, const std::vector<double>& times,
+                                     int snapshots, const std::vector<int>& linear_invalid, const std::string& title) {
+  const std::vector<int> chosen = snapshot_frames(int(ours.size()), snapshots);
+  // One scale for both rows, so the two morphs compare frame for frame.
+  std::vector<const std::vector<Vec2>*> sets;
+  for (int f : chosen) sets.push_back(&ours[f]), sets.push_back(&linear[f]);
+  const std::size_t n = source.vertices.size();
+  std::ostringstream out;
+  out << header(double(chosen.size()) * kPanel, 2 * (kPanel + 24), title);
+  draw_filmstrip_row(out, source, ours, times, chosen, sets, n, nullptr, 0, "stickmorph, ", nullptr);
+  draw_filmstrip_row(out, source, linear, times, chosen, sets, n, nullptr, kPanel + 24, "straight lines, ",
+                     &linear_invalid);
   out << "</svg>\n";
   return out.str();
 }

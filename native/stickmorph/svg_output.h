@@ -29,4 +29,12 @@ std::string filmstrip_svg(const StickFigure& source, const std::vector<std::vect
                           const std::vector<double>& times, int snapshots, const FigureTriangulation* triangulation,
                           const std::string& title);
 
+/// Our morph (top row) against the straight-line morph (bottom row, the
+/// paper's Figure 8d) at the same snapshots and one scale. Both hold the
+/// figure's vertices per frame (#V by 2 at least); snapshots of frames listed
+/// in `linear_invalid` are captioned as self-intersecting.
+std::string comparison_filmstrip_svg(const StickFigure& source, const std::vector<std::vector<Vec2>>& ours,
+                                     const std::vector<std::vector<Vec2>>& linear, const std::vector<double>& times,
+                                     int snapshots, const std::vector<int>& linear_invalid, const std::string& title);
+
 }  // namespace stickmorph
