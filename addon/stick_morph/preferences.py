@@ -128,13 +128,14 @@ class STICKMORPH_OT_load_defaults(bpy.types.Operator):
 classes = (StickMorphPreferences, StickMorphSceneSettings, STICKMORPH_OT_load_defaults)
 
 
+_register_classes, _unregister_classes = bpy.utils.register_classes_factory(classes)
+
+
 def register():
-    for cls in classes:
-        bpy.utils.register_class(cls)
+    _register_classes()
     bpy.types.Scene.stick_morph = PointerProperty(type=StickMorphSceneSettings)
 
 
 def unregister():
     del bpy.types.Scene.stick_morph
-    for cls in reversed(classes):
-        bpy.utils.unregister_class(cls)
+    _unregister_classes()

@@ -45,11 +45,4 @@ class VIEW3D_PT_stick_morph(bpy.types.Panel):
 classes = (VIEW3D_PT_stick_morph,)
 
 
-def register():
-    for cls in classes:
-        bpy.utils.register_class(cls)
-
-
-def unregister():
-    for cls in reversed(classes):
-        bpy.utils.unregister_class(cls)
+register, unregister = bpy.utils.register_classes_factory(classes)
