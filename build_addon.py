@@ -83,8 +83,14 @@ def addon_version() -> str:
 
 
 def build_module(python: str, build_dir: Path, jobs: int) -> Path:
-    run(["cmake", "-S", str(ROOT), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release",
-         f"-DPython3_EXECUTABLE={python}", "-DSTICKMORPH_BUILD_TESTS=OFF"])
+    # Only the module is needed. In a build folder of its own the tests are
+    # switched off; a shared one (scripts/test.sh passes build/) keeps the
+    # settings it has, so its Catch2 tests still build afterwards.
+    configure = ["cmake", "-S", str(ROOT), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release",
+                 f"-DPython3_EXECUTABLE={python}"]
+    if not (build_dir / "CMakeCache.txt").exists():
+        configure.append("-DSTICKMORPH_BUILD_TESTS=OFF")
+    run(configure)
     run(["cmake", "--build", str(build_dir), f"-j{jobs}", "--target", "stickmorph_python"])
     modules = sorted((build_dir / "python").glob("stickmorph*.so"))
     if len(modules) != 1:

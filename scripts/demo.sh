@@ -6,7 +6,11 @@
 # the paper's S into U (Figure 8c) and writes, to out/: the morph (FORMAT.md
 # JSON), its filmstrip, the straight-line morph's filmstrip (Figure 8d, which
 # self-intersects) and the compatible triangulation drawn side by side.
-# The headless Blender bake and render comes with the add-on.
+# Then it builds the Blender add-on zip (dist/stick_morph-<version>.zip),
+# bakes the monkey -> basketball player sample (Figure 8a) with it in headless
+# Blender (scripts/render_demo.py: a temporary user config, never the real
+# one) and renders PNG frames and an MP4 into out/monkey_to_player/, next to a
+# filmstrip of our morph against the straight-line morph (Figure 8d).
 set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -44,7 +48,7 @@ section "Morph: S to U (Figure 8c) and the straight-line morph (Figure 8d)"
 mkdir -p out
 paper=tests/data/paper
 run() { echo "\$ $*"; "$@"; }
-run build/stickmorph morph $paper/s_to_u.source.json $paper/s_to_u.target.json -o out/s_to_u.json --frames 49 --svg out/s_to_u.svg
+run build/stickmorph morph $paper/s_to_u.source.json $paper/s_to_u.target.json -o out/s_to_u.json --frames 49 --svg out/s_to_u.svg --svg-compare-linear
 run build/stickmorph morph $paper/s_to_u.source.json $paper/s_to_u.target.json -o out/s_to_u_linear.json --frames 49 --method linear --svg out/s_to_u_linear.svg
 run build/stickmorph triangulate $paper/s_to_u.source.json $paper/s_to_u.target.json -o out/s_to_u_triangulation.json --svg out/s_to_u_triangulation.svg
 /usr/bin/python3 - <<'PY'
@@ -55,5 +59,45 @@ print(f"our morph: {ours['steiner_vertices']} Steiner vertices, every frame veri
 print(f"straight-line morph: frames {linear['invalid_frames']} self-intersect")
 PY
 ls -l out/
+
+section "Blender add-on: build the zip"
+/usr/bin/python3 build_addon.py --build-dir build
+zip=$(ls -t dist/stick_morph-*.zip | head -n 1)
+echo "add-on zip: $zip"
+
+section "Blender: bake and render monkey -> basketball player (Figure 8a)"
+sample=monkey_to_player
+mkdir -p out/$sample
+started=$SECONDS
+echo "\$ blender -b --factory-startup --python-exit-code 1 --python scripts/render_demo.py -- --sample blend_samples/$sample.blend --zip $zip --out out/$sample --frames 60 --resolution 960 540"
+# Blender prints a line or two per rendered frame; those are left out here.
+blender -b --factory-startup --python-exit-code 1 --python scripts/render_demo.py -- \
+  --sample blend_samples/$sample.blend --zip "$zip" --out out/$sample --frames 60 --resolution 960 540 \
+  | grep --line-buffered -v -E '^[[:space:]]*(Fra:|Saved: |Append frame|Time: |$)'
+echo "bake and render: $((SECONDS - started)) s"
+
+section "Filmstrip: our morph against the straight-line morph (Figure 8d)"
+figures=blend_samples/figures
+run build/stickmorph morph $figures/$sample.source.json $figures/$sample.target.json \
+  -o out/$sample/morph.json --svg out/$sample/filmstrip.svg --svg-compare-linear
+run build/stickmorph morph $figures/$sample.source.json $figures/$sample.target.json \
+  -o out/$sample/linear.json --method linear
+OUT=out/$sample /usr/bin/python3 - <<'PY'
+import glob, json, os
+out = os.environ["OUT"]
+stats = json.load(open(f"{out}/morph.json"))["stats"]
+print(f"our morph: {stats['steiner_vertices']} Steiner vertices, every frame verified valid")
+invalid = json.load(open(f"{out}/linear.json"))["stats"]["invalid_frames"]
+print(f"straight-line morph: frames {invalid} self-intersect" if invalid else
+      "straight-line morph: no frame self-intersects for this pair (S to U above has frames that do)")
+mp4 = f"{out}/morph.mp4"
+frames = sorted(glob.glob(f"{out}/frames/frame_*.png"))
+print("\nOutputs:")
+print(f"  {mp4}: {os.path.getsize(mp4) / 1024:.0f} KiB")
+print(f"  {out}/frames/: {len(frames)} PNG frames")
+print(f"  {out}/baked.blend: {os.path.getsize(out + '/baked.blend') / 1024:.0f} KiB (renders without the add-on)")
+print(f"  {out}/filmstrip.svg: {os.path.getsize(out + '/filmstrip.svg') / 1024:.0f} KiB "
+      "(top: our morph, bottom: the straight-line morph)")
+PY
 
 section "Demo finished"

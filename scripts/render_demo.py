@@ -1,0 +1,275 @@
+"""Bakes a bundled sample with the Stick Morph add-on and renders it, headless.
+
+    blender -b --factory-startup --python-exit-code 1 --python scripts/render_demo.py -- \\
+        --sample blend_samples/monkey_to_player.blend --zip dist/stick_morph-<version>.zip \\
+        --out out/monkey_to_player [--frames 60] [--resolution 960 540]
+
+Steps:
+1. Re-launches Blender with BLENDER_USER_SCRIPTS, BLENDER_USER_CONFIG and
+   BLENDER_USER_DATAFILES in a temporary folder (as tests/blender/run_pytest.py
+   does), so the real user configuration is never touched; the folder is
+   removed afterwards.
+2. Installs and enables the add-on from the zip there.
+3. Opens the sample and bakes `<name>_source` -> `<name>_target` with
+   object.stick_morph_bake (renderable Geometry Nodes tubes), frames 1..N.
+4. Sets up Workbench for a clear picture: flat dark tubes on a light
+   background, the source and target meshes hidden from render (only the morph
+   shows), Standard view transform so the colours come out as set.
+5. Writes <out>/baked.blend (renders in a Blender without the add-on),
+   <out>/frames/frame_####.png and <out>/morph.mp4 (H.264 in MPEG-4; fails if
+   this Blender has no FFmpeg support).
+"""
+
+import argparse
+import glob
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+SANDBOX = "STICKMORPH_RENDER_DEMO_SANDBOX"
+TUBE_COLOR = (0.008, 0.01, 0.02)    # near-black blue (linear; about #171a26 on screen)
+BACKGROUND = (0.93, 0.93, 0.93)     # light gray
+
+
+def script_args():
+    return sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+
+
+def parse_args(argv):
+    parser = argparse.ArgumentParser(
+        prog="render_demo.py",
+        description="Bake a sample .blend with the Stick Morph add-on and render PNG frames and an MP4.")
+    parser.add_argument("--sample", required=True, help="a blend_samples/NAME.blend file")
+    parser.add_argument("--zip", required=True, help="the add-on zip, dist/stick_morph-<version>.zip")
+    parser.add_argument("--out", required=True, help="output folder")
+    parser.add_argument("--frames", type=int, default=60, help="frames of the morph (default 60)")
+    parser.add_argument("--resolution", type=int, nargs=2, default=(960, 540), metavar=("W", "H"),
+                        help="render size in pixels (default 960 540)")
+    parser.add_argument("--tube-radius", type=float, default=0.006,
+                        help="tube radius as a fraction of the figures' size (default 0.006)")
+    args = parser.parse_args(argv)
+    if args.frames < 2:
+        parser.error("--frames must be at least 2")
+    if min(args.resolution) < 16 or any(v % 2 for v in args.resolution):
+        parser.error("--resolution: even sizes of at least 16 pixels (H.264 needs even sizes)")
+    for path, what in ((args.sample, "--sample"), (args.zip, "--zip")):
+        if not os.path.isfile(path):
+            parser.error(f"{what}: no such file: {path}")
+    args.sample, args.zip, args.out = map(os.path.abspath, (args.sample, args.zip, args.out))
+    return args
+
+
+def fail(message):
+    print(f"render_demo.py: error: {message}", file=sys.stderr, flush=True)
+    sys.exit(1)
+
+
+def relaunch_in_sandbox():
+    """Runs this script again in a Blender whose user folders are temporary."""
+    import bpy
+    parse_args(script_args())  # usage errors before starting anything
+    with tempfile.TemporaryDirectory(prefix="stickmorph-render-demo-") as tmp:
+        env = dict(os.environ)
+        env.update({
+            "BLENDER_USER_SCRIPTS": os.path.join(tmp, "scripts"),
+            "BLENDER_USER_CONFIG": os.path.join(tmp, "config"),
+            "BLENDER_USER_DATAFILES": os.path.join(tmp, "datafiles"),
+            SANDBOX: tmp,
+        })
+        command = [bpy.app.binary_path, "-b", "--factory-startup", "--python-exit-code", "1",
+                   "--python", os.path.abspath(__file__), "--", *script_args()]
+        return subprocess.call(command, env=env)
+
+
+def install_addon(zip_path):
+    import bpy
+    scripts = bpy.utils.user_resource("SCRIPTS")
+    sandbox = os.path.realpath(os.environ[SANDBOX])
+    if not os.path.realpath(scripts).startswith(sandbox):
+        fail(f"the user scripts folder {scripts} is not in the temporary folder {sandbox}")
+    if bpy.ops.preferences.addon_install(filepath=zip_path, overwrite=True) != {"FINISHED"}:
+        fail(f"could not install the add-on from {zip_path}")
+    if bpy.ops.preferences.addon_enable(module="stick_morph") != {"FINISHED"}:
+        fail("could not enable the add-on stick_morph")
+    import stick_morph
+    if not os.path.realpath(stick_morph.__file__).startswith(sandbox):
+        fail(f"stick_morph was loaded from {stick_morph.__file__}, not from the installed zip")
+    print(f"add-on installed and enabled from {zip_path}", flush=True)
+
+
+def find_pair(sample):
+    import bpy
+    name = os.path.splitext(os.path.basename(sample))[0]
+    source = bpy.data.objects.get(f"{name}_source")
+    target = bpy.data.objects.get(f"{name}_target")
+    if source is None or target is None:
+        meshes = sorted(o.name for o in bpy.data.objects if o.type == "MESH")
+        fail(f"{sample} has no objects {name}_source and {name}_target (meshes: {', '.join(meshes)})")
+    return name, source, target
+
+
+def bake(source, target, frames, tube_radius):
+    import bpy
+    for obj in bpy.context.view_layer.objects:
+        obj.select_set(False)
+    bpy.context.view_layer.objects.active = None
+    started = time.perf_counter()
+    result = bpy.ops.object.stick_morph_bake(
+        source=source.name, target=target.name, frame_start=1, frame_count=frames,
+        renderable=True, tube_radius=tube_radius, easing="LINEAR", set_frame_range=True)
+    if result != {"FINISHED"}:
+        fail(f"baking {source.name} -> {target.name} failed ({result}); see the report above")
+    obj = bpy.context.view_layer.objects.active
+    if obj is None or obj.get("stick_morph_role") != "result":
+        fail("the bake did not leave its result active")
+    print(f"baked {source.name} -> {target.name} into '{obj.name}': {len(obj.data.vertices)} vertices, "
+          f"{frames} frames, {time.perf_counter() - started:.2f} s", flush=True)
+    return obj
+
+
+def set_up_render(scene, source, target, resolution):
+    """Workbench: flat dark tubes on a light background; only the morph renders."""
+    source.hide_render = True
+    target.hide_render = True
+    render = scene.render
+    render.engine = "BLENDER_WORKBENCH"
+    render.resolution_x, render.resolution_y = resolution
+    render.resolution_percentage = 100
+    render.film_transparent = False
+    shading = scene.display.shading
+    shading.light = "FLAT"
+    shading.color_type = "SINGLE"
+    shading.single_color = TUBE_COLOR
+    shading.show_shadows = False
+    shading.show_cavity = False
+    shading.show_object_outline = False
+    shading.show_specular_highlight = False
+    scene.display.render_aa = "8"
+    scene.view_settings.view_transform = "Standard"
+    scene.view_settings.look = "None"
+    scene.view_settings.exposure = 0.0
+    scene.view_settings.gamma = 1.0
+    if scene.world is None:
+        import bpy
+        scene.world = bpy.data.worlds.new("World")
+    scene.world.color = BACKGROUND
+
+
+def check_framing(scene, result):
+    """Fails unless every frame of the morph lies inside the camera's view."""
+    import bpy
+    from bpy_extras.object_utils import world_to_camera_view
+    from mathutils import Vector
+    if scene.camera is None:
+        fail("the sample has no camera")
+    worst = 0.0
+    for frame in range(scene.frame_start, scene.frame_end + 1):
+        scene.frame_set(frame)
+        evaluated = result.evaluated_get(bpy.context.evaluated_depsgraph_get())
+        for corner in evaluated.bound_box:
+            world = evaluated.matrix_world @ Vector(corner)
+            x, y, _ = world_to_camera_view(scene, scene.camera, world)
+            worst = max(worst, abs(x - 0.5), abs(y - 0.5))
+    scene.frame_set(scene.frame_start)
+    if worst > 0.5:
+        fail(f"the morph leaves the camera's view (reaches {worst + 0.5:.2f} of the frame)")
+    print(f"framing: the morph stays within the central {200 * worst:.0f}% of the frame", flush=True)
+
+
+def render_frames(scene, frames_dir):
+    import bpy
+    os.makedirs(frames_dir, exist_ok=True)
+    for old in glob.glob(os.path.join(frames_dir, "frame_*.png")):
+        os.remove(old)
+    scene.render.image_settings.file_format = "PNG"
+    scene.render.image_settings.color_mode = "RGB"
+    scene.render.image_settings.color_depth = "8"
+    scene.render.use_file_extension = True
+    scene.render.filepath = os.path.join(frames_dir, "frame_####")
+    started = time.perf_counter()
+    bpy.ops.render.render(animation=True)
+    written = sorted(glob.glob(os.path.join(frames_dir, "frame_*.png")))
+    expected = scene.frame_end - scene.frame_start + 1
+    if len(written) != expected:
+        fail(f"expected {expected} PNG frames in {frames_dir}, found {len(written)}")
+    print(f"rendered {len(written)} PNG frames in {time.perf_counter() - started:.1f} s", flush=True)
+    return written
+
+
+def render_movie(scene, mp4_path):
+    import bpy
+    if not bpy.app.build_options.codec_ffmpeg:
+        fail("this Blender was built without FFmpeg (bpy.app.build_options.codec_ffmpeg is False), "
+             "so it cannot write the MP4; the PNG frames were written")
+    # Blender names movies itself (frame range appended); render into a
+    # scratch folder and move the one file it writes.
+    scratch = tempfile.mkdtemp(prefix="movie-", dir=os.path.dirname(mp4_path))
+    try:
+        settings = scene.render.image_settings
+        settings.file_format = "FFMPEG"
+        settings.color_mode = "RGB"
+        ffmpeg = scene.render.ffmpeg
+        ffmpeg.format = "MPEG4"
+        ffmpeg.codec = "H264"
+        ffmpeg.constant_rate_factor = "HIGH"
+        ffmpeg.ffmpeg_preset = "GOOD"
+        ffmpeg.gopsize = scene.render.fps
+        ffmpeg.audio_codec = "NONE"
+        scene.render.use_file_extension = True
+        scene.render.filepath = os.path.join(scratch, "morph")
+        started = time.perf_counter()
+        bpy.ops.render.render(animation=True)
+        movies = glob.glob(os.path.join(scratch, "*"))
+        if len(movies) != 1 or os.path.getsize(movies[0]) == 0:
+            fail(f"the movie render wrote {movies or 'nothing'}")
+        os.replace(movies[0], mp4_path)
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
+    print(f"encoded {mp4_path} in {time.perf_counter() - started:.1f} s", flush=True)
+
+
+def main():
+    import bpy
+    args = parse_args(script_args())
+    started = time.perf_counter()
+    print(f"Blender {bpy.app.version_string}, FFmpeg support: {bool(bpy.app.build_options.codec_ffmpeg)}",
+          flush=True)
+    if not bpy.app.build_options.codec_ffmpeg:
+        fail("this Blender was built without FFmpeg (bpy.app.build_options.codec_ffmpeg is False): "
+             "it cannot write morph.mp4")
+    install_addon(args.zip)
+
+    bpy.ops.wm.open_mainfile(filepath=args.sample, load_ui=False)
+    scene = bpy.context.scene
+    name, source, target = find_pair(args.sample)
+    result = bake(source, target, args.frames, args.tube_radius)
+    set_up_render(scene, source, target, args.resolution)
+    check_framing(scene, result)
+
+    os.makedirs(args.out, exist_ok=True)
+    baked = os.path.join(args.out, "baked.blend")
+    # Saved with the render settings: the file renders the same in a Blender
+    # without the add-on. copy=True keeps the open file's path the sample's.
+    bpy.ops.wm.save_as_mainfile(filepath=baked, copy=True, compress=True)
+    print(f"saved {baked}", flush=True)
+
+    frames = render_frames(scene, os.path.join(args.out, "frames"))
+    mp4 = os.path.join(args.out, "morph.mp4")
+    render_movie(scene, mp4)
+
+    size = lambda path: f"{os.path.getsize(path) / 1024:.0f} KiB"
+    print(f"\nrender_demo.py: {name}, {args.frames} frames at {args.resolution[0]}x{args.resolution[1]}, "
+          f"{time.perf_counter() - started:.1f} s. Written:", flush=True)
+    print(f"  {baked} ({size(baked)})")
+    print(f"  {os.path.dirname(frames[0])}/frame_####.png: {len(frames)} PNG frames "
+          f"({os.path.basename(frames[0])} .. {os.path.basename(frames[-1])})")
+    print(f"  {mp4} ({size(mp4)}, {scene.render.fps} fps)", flush=True)
+
+
+if __name__ == "__main__":
+    if not os.environ.get(SANDBOX):
+        sys.exit(relaunch_in_sandbox())
+    main()
