@@ -24,12 +24,13 @@ import argparse
 import glob
 import os
 import shutil
-import subprocess
 import sys
 import tempfile
 import time
 
-SANDBOX = "STICKMORPH_RENDER_DEMO_SANDBOX"
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import blender_sandbox  # noqa: E402
+from blender_sandbox import SANDBOX  # noqa: E402
 TUBE_COLOR = (0.008, 0.01, 0.02)    # near-black blue (linear; about #171a26 on screen)
 BACKGROUND = (0.93, 0.93, 0.93)     # light gray
 
@@ -69,19 +70,8 @@ def fail(message):
 
 def relaunch_in_sandbox():
     """Runs this script again in a Blender whose user folders are temporary."""
-    import bpy
     parse_args(script_args())  # usage errors before starting anything
-    with tempfile.TemporaryDirectory(prefix="stickmorph-render-demo-") as tmp:
-        env = dict(os.environ)
-        env.update({
-            "BLENDER_USER_SCRIPTS": os.path.join(tmp, "scripts"),
-            "BLENDER_USER_CONFIG": os.path.join(tmp, "config"),
-            "BLENDER_USER_DATAFILES": os.path.join(tmp, "datafiles"),
-            SANDBOX: tmp,
-        })
-        command = [bpy.app.binary_path, "-b", "--factory-startup", "--python-exit-code", "1",
-                   "--python", os.path.abspath(__file__), "--", *script_args()]
-        return subprocess.call(command, env=env)
+    return blender_sandbox.relaunch_in_sandbox(__file__, script_args(), "stickmorph-render-demo-")
 
 
 def install_addon(zip_path):

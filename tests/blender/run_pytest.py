@@ -11,12 +11,12 @@ failure.
 """
 
 import os
-import subprocess
 import sys
-import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-SANDBOX = "STICKMORPH_BLENDER_SANDBOX"
+sys.path.insert(0, os.path.join(HERE, "..", "..", "scripts"))
+import blender_sandbox  # noqa: E402
+from blender_sandbox import SANDBOX  # noqa: E402
 
 
 def pytest_args():
@@ -24,18 +24,7 @@ def pytest_args():
 
 
 def relaunch_in_sandbox():
-    import bpy
-    with tempfile.TemporaryDirectory(prefix="stickmorph-blender-") as tmp:
-        env = dict(os.environ)
-        env.update({
-            "BLENDER_USER_SCRIPTS": os.path.join(tmp, "scripts"),
-            "BLENDER_USER_CONFIG": os.path.join(tmp, "config"),
-            "BLENDER_USER_DATAFILES": os.path.join(tmp, "datafiles"),
-            SANDBOX: tmp,
-        })
-        command = [bpy.app.binary_path, "-b", "--factory-startup", "--python-exit-code", "1",
-                   "--python", os.path.abspath(__file__), "--", *pytest_args()]
-        return subprocess.call(command, env=env)
+    return blender_sandbox.relaunch_in_sandbox(__file__, pytest_args(), "stickmorph-blender-")
 
 
 def run_pytest():
