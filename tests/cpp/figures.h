@@ -62,14 +62,13 @@ inline StickFigure grid_triangulation(int k) {
   return figure(std::move(pts), edges);
 }
 
-/// A random connected plane graph: a greedy triangulation of random points
-/// (shortest segments first, kept when they meet nothing), thinned by
-/// removing random edges while it stays connected. Produces faces with
-/// dangling edges, cut vertices and tree parts.
-inline StickFigure random_plane_graph(std::mt19937& rng, int n, double keep_fraction) {
-  std::uniform_real_distribution<double> coord(-10.0, 10.0);
-  std::vector<Vec2> pts(n);
-  for (Vec2& p : pts) p = {coord(rng), coord(rng)};
+/// The greedy triangulation of `pts`: every pair of points as a candidate
+/// segment, shortest first, kept when it meets no kept segment except at a
+/// shared endpoint and passes through no other point. The result is a
+/// maximal plane graph on the points, i.e. a triangulation of their convex
+/// hull when no three hull points are collinear. Decided by exact predicates.
+inline std::vector<Edge> greedy_triangulation(const std::vector<Vec2>& pts) {
+  const int n = int(pts.size());
   struct Candidate { double length; int a, b; };
   std::vector<Candidate> candidates;
   for (int a = 0; a < n; ++a)
@@ -92,13 +91,20 @@ inline StickFigure random_plane_graph(std::mt19937& rng, int n, double keep_frac
       if (v != c.a && v != c.b && on_segment(pts[v], pts[c.a], pts[c.b])) ok = false;
     if (ok) kept.push_back({c.a, c.b});
   }
-  // Thin: drop random edges whose removal keeps the graph connected.
-  std::shuffle(kept.begin(), kept.end(), rng);
+  return kept;
+}
+
+/// Thins `edges` (a connected graph on vertices 0..n-1): in random order,
+/// drops each edge with probability 1 - keep_fraction if the graph stays
+/// connected without it. The edge list comes out shuffled.
+template <class Rng>
+void thin_keeping_connected(std::vector<Edge>& edges, int n, double keep_fraction, Rng& rng) {
+  std::shuffle(edges.begin(), edges.end(), rng);
   std::bernoulli_distribution drop(1.0 - keep_fraction);
   auto connected_without = [&](std::size_t skip) {
     std::vector<std::vector<int>> adj(n);
-    for (std::size_t i = 0; i < kept.size(); ++i)
-      if (i != skip) adj[kept[i][0]].push_back(kept[i][1]), adj[kept[i][1]].push_back(kept[i][0]);
+    for (std::size_t i = 0; i < edges.size(); ++i)
+      if (i != skip) adj[edges[i][0]].push_back(edges[i][1]), adj[edges[i][1]].push_back(edges[i][0]);
     std::vector<int> seen(n, 0), stack{0};
     seen[0] = 1;
     int count = 1;
@@ -110,13 +116,28 @@ inline StickFigure random_plane_graph(std::mt19937& rng, int n, double keep_frac
     }
     return count == n;
   };
-  for (std::size_t i = 0; i < kept.size();) {
-    if (drop(rng) && connected_without(i)) kept.erase(kept.begin() + long(i));
+  for (std::size_t i = 0; i < edges.size();) {
+    if (drop(rng) && connected_without(i)) edges.erase(edges.begin() + long(i));
     else ++i;
   }
+}
+
+inline RawEdges raw_edges(const std::vector<Edge>& edges) {
   RawEdges raw;
-  for (const Edge& e : kept) raw.push_back({e[0], e[1]});
-  return figure(std::move(pts), raw);
+  for (const Edge& e : edges) raw.push_back({e[0], e[1]});
+  return raw;
+}
+
+/// A random connected plane graph: the greedy triangulation of random points
+/// thinned by removing random edges while it stays connected. Produces faces
+/// with dangling edges, cut vertices and tree parts.
+inline StickFigure random_plane_graph(std::mt19937& rng, int n, double keep_fraction) {
+  std::uniform_real_distribution<double> coord(-10.0, 10.0);
+  std::vector<Vec2> pts(n);
+  for (Vec2& p : pts) p = {coord(rng), coord(rng)};
+  std::vector<Edge> kept = greedy_triangulation(pts);
+  thin_keeping_connected(kept, n, keep_fraction, rng);
+  return figure(std::move(pts), raw_edges(kept));
 }
 
 /// `f` rotated by `angle`, scaled and moved.
