@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "stickmorph/argument_limits.h"
 #include "stickmorph/compatibility.h"
 #include "stickmorph/errors.h"
 #include "stickmorph/figure_io.h"
@@ -33,6 +34,7 @@ constexpr const char* kVersion = STICKMORPH_VERSION;  // from CMake
 constexpr int kExitSuccess = 0;
 constexpr int kExitIncompatible = 1;  // only `check`
 constexpr int kExitError = 2;
+
 
 /// An option a command accepts, e.g. {"--frames", "", "N", ...}.
 struct OptionSpec {
@@ -116,8 +118,8 @@ const std::string& required_option(const ParsedArguments& arguments, std::string
   return *value;
 }
 
-// A whole number option at least `least`, e.g. --frames.
-int integer_option(const ParsedArguments& arguments, std::string_view name, int fallback, int least) {
+// A whole number option in [least, most], e.g. --frames.
+int integer_option(const ParsedArguments& arguments, std::string_view name, int fallback, int least, int most) {
   const std::string* text = option_value(arguments, name);
   if (text == nullptr) return fallback;
   int value = 0;
@@ -128,29 +130,47 @@ int integer_option(const ParsedArguments& arguments, std::string_view name, int 
   if (value < least)
     throw InvalidArgumentError("option " + std::string(name) + " must be at least " + std::to_string(least) +
                                ", got " + std::to_string(value));
+  if (value > most)
+    throw InvalidArgumentError("option " + std::string(name) + " must be at most " + std::to_string(most) +
+                               ", got " + std::to_string(value));
   return value;
 }
 
 FigureTriangulationOptions triangulation_options(const ParsedArguments& arguments) {
   FigureTriangulationOptions options;
   if (const std::string* name = option_value(arguments, "--steiner")) options.method = parse_steiner_method(*name);
-  options.enclosure_sides = integer_option(arguments, "--enclosure-sides", 6, 3);
+  options.enclosure_sides = integer_option(arguments, "--enclosure-sides", 6, 3, kMaxEnclosureSides);
   return options;
+}
+
+// The output files a command will write (-o and --svg), checked before any
+// work so that a typo in a folder name fails at once, not after the morph.
+// Returns the --svg path or nullptr.
+const std::string* check_outputs(const ParsedArguments& arguments, std::string_view command,
+                                 const std::string& output) {
+  cli::check_output_path("--output", output);
+  const std::string* svg = option_value(arguments, "--svg");
+  if (svg == nullptr) return nullptr;
+  cli::check_output_path("--svg", *svg);
+  if (*svg == output)
+    throw InvalidArgumentError(std::string(command) + ": --svg and --output name the same file " + quoted(output));
+  return svg;
 }
 
 int run_triangulate(const ParsedArguments& arguments) {
   const std::string& output = required_option(arguments, "triangulate", "--output");
+  const std::string* svg = check_outputs(arguments, "triangulate", output);
+  const FigureTriangulationOptions options = triangulation_options(arguments);
   const StickFigure source = read_figure_file(arguments.positional[0]);
   const StickFigure target = read_figure_file(arguments.positional[1]);
-  const FigureTriangulationOptions options = triangulation_options(arguments);
   const FigureTriangulation triangulation = triangulate_figures(source, target, options);
   JsonWriter out(true);
   cli::write_triangulation(out, triangulation);
-  cli::write_file_atomically(output, out.finish());
-  if (const std::string* svg = option_value(arguments, "--svg"))
-    cli::write_file_atomically(*svg, triangulation_svg(triangulation, source,
-                                                       "stickmorph triangulate --steiner " +
-                                                           steiner_method_name(options.method)));
+  std::vector<cli::OutputFile> files{{output, out.finish()}};
+  if (svg)
+    files.push_back({*svg, triangulation_svg(triangulation, source,
+                                             "stickmorph triangulate --steiner " + steiner_method_name(options.method))});
+  cli::write_files_atomically(files);
   return kExitSuccess;
 }
 
@@ -249,21 +269,35 @@ std::string morph_document(const StickFigure& source, const std::vector<double>&
 
 int run_morph(const ParsedArguments& arguments) {
   const std::string& output = required_option(arguments, "morph", "--output");
+  const std::string* svg = check_outputs(arguments, "morph", output);
   MorphOptions options;
-  options.frames = integer_option(arguments, "--frames", 50, 2);
-  if (options.frames > kMaxMorphFrames)
-    throw InvalidArgumentError("option --frames must be at most " + std::to_string(kMaxMorphFrames) + ", got " +
-                               std::to_string(options.frames));
+  options.frames = integer_option(arguments, "--frames", 50, 2, kMaxMorphFrames);
   if (const std::string* name = option_value(arguments, "--weights")) options.weights = parse_weight_kind(*name);
   options.verify = option_value(arguments, "--no-verify") == nullptr;
   const std::string method = option_value(arguments, "--method") ? *option_value(arguments, "--method") : "barycentric";
   if (method != "barycentric" && method != "linear")
     throw InvalidArgumentError("unknown morph method '" + method + "' (choose barycentric or linear)");
+  const bool overlay = option_value(arguments, "--svg-triangulation") != nullptr;
+  const bool compare_linear = option_value(arguments, "--svg-compare-linear") != nullptr;
+  // Options that would have no effect are refused rather than ignored, so
+  // that a user who asked for a drawing or a setting does not silently get
+  // something else.
+  for (const char* drawing : {"--svg-triangulation", "--svg-compare-linear"})
+    if (option_value(arguments, drawing) && svg == nullptr)
+      throw InvalidArgumentError("morph: option " + std::string(drawing) + " needs --svg FILE");
+  if (overlay && compare_linear)
+    throw InvalidArgumentError("morph: --svg-triangulation and --svg-compare-linear cannot be combined");
+  if (method == "linear") {
+    for (const char* unused : {"--svg-triangulation", "--svg-compare-linear", "--no-verify", "--weights",
+                               "--steiner", "--enclosure-sides"})
+      if (option_value(arguments, unused))
+        throw InvalidArgumentError("morph: option " + std::string(unused) +
+                                   " has no effect with --method linear (the straight-line morph uses no "
+                                   "triangulation)");
+  }
   const FigureTriangulationOptions tri_options = triangulation_options(arguments);
   const StickFigure source = read_figure_file(arguments.positional[0]);
   const StickFigure target = read_figure_file(arguments.positional[1]);
-  const std::string* svg = option_value(arguments, "--svg");
-  const bool overlay = option_value(arguments, "--svg-triangulation") != nullptr;
   const std::string title = "stickmorph morph: " + (source.name.empty() ? arguments.positional[0] : source.name) +
                             " -> " + (target.name.empty() ? arguments.positional[1] : target.name);
 
@@ -275,9 +309,10 @@ int run_morph(const ParsedArguments& arguments) {
     std::vector<int> invalid;
     const MorphResult result = linear_morph(source, target, options.frames, &invalid);
     const double ms = milliseconds_since(start);
-    cli::write_file_atomically(output, morph_document(source, result.times, result.frames, nullptr, 0, ms, method,
-                                                      options, tri_options, nullptr, &invalid));
-    if (svg) cli::write_file_atomically(*svg, filmstrip_svg(source, result.frames, result.times, 7, nullptr, title));
+    std::vector<cli::OutputFile> files{{output, morph_document(source, result.times, result.frames, nullptr, 0, ms,
+                                                               method, options, tri_options, nullptr, &invalid)}};
+    if (svg) files.push_back({*svg, filmstrip_svg(source, result.frames, result.times, 7, nullptr, title)});
+    cli::write_files_atomically(files);
     return kExitSuccess;
   }
   auto start = std::chrono::steady_clock::now();
@@ -286,18 +321,19 @@ int run_morph(const ParsedArguments& arguments) {
   start = std::chrono::steady_clock::now();
   const MorphResult result = morph_triangulation(triangulation, source, options);
   const double morph_ms = milliseconds_since(start);
-  cli::write_file_atomically(output, morph_document(source, result.times, result.frames, &triangulation,
-                                                    triangulate_ms, morph_ms, method, options, tri_options,
-                                                    &result.stats, nullptr));
-  if (svg && option_value(arguments, "--svg-compare-linear")) {
+  std::vector<cli::OutputFile> files{{output, morph_document(source, result.times, result.frames, &triangulation,
+                                                             triangulate_ms, morph_ms, method, options, tri_options,
+                                                             &result.stats, nullptr)}};
+  if (svg && compare_linear) {
     std::vector<int> invalid;
     const MorphResult linear = linear_morph(source, target, options.frames, &invalid);
-    cli::write_file_atomically(*svg, comparison_filmstrip_svg(source, result.frames, linear.frames, result.times, 7,
-                                                              invalid, title));
+    files.push_back({*svg, comparison_filmstrip_svg(source, result.frames, linear.frames, result.times, 7, invalid,
+                                                    title)});
   } else if (svg) {
-    cli::write_file_atomically(*svg, filmstrip_svg(source, result.frames, result.times, 7,
-                                                   overlay ? &triangulation : nullptr, title));
+    files.push_back({*svg, filmstrip_svg(source, result.frames, result.times, 7, overlay ? &triangulation : nullptr,
+                                         title)});
   }
+  cli::write_files_atomically(files);
   return kExitSuccess;
 }
 
@@ -316,7 +352,7 @@ const std::vector<CommandSpec>& commands() {
        {"SOURCE.json", "TARGET.json"},
        {{"--output", "-o", "OUT.json", "where to write the triangulation object (required)"},
         {"--steiner", "", "NAME", "compatible triangulation method: improved (default), sg2001 or aronov"},
-        {"--enclosure-sides", "", "K", "sides of the common convex enclosure (default 6, at least 3)"},
+        {"--enclosure-sides", "", "K", "sides of the common convex enclosure (default 6, 3 to 1000)"},
         {"--svg", "", "FILE", "also draw both triangulations side by side"}},
        "compatibly triangulate two stick figures inside a common enclosure",
        "Builds the compatible triangulation of the two figures that the morph uses\n"
@@ -329,10 +365,10 @@ const std::vector<CommandSpec>& commands() {
       {"morph",
        {"SOURCE.json", "TARGET.json"},
        {{"--output", "-o", "OUT.json", "where to write the morph (required)"},
-        {"--frames", "", "N", "number of frames, at t = k/(N-1) (default 50, at least 2)"},
+        {"--frames", "", "N", "number of frames, at t = k/(N-1) (default 50, 2 to 100000)"},
         {"--steiner", "", "NAME", "compatible triangulation method: improved (default), sg2001 or aronov"},
         {"--weights", "", "KIND", "barycentric weights: mvc (default), uniform or floater"},
-        {"--enclosure-sides", "", "K", "sides of the common convex enclosure (default 6, at least 3)"},
+        {"--enclosure-sides", "", "K", "sides of the common convex enclosure (default 6, 3 to 1000)"},
         {"--method", "", "NAME", "barycentric (default) or linear (straight-line baseline, Fig. 8d)"},
         {"--no-verify", "", "", "skip the exact check of every frame"},
         {"--svg", "", "FILE", "also draw a filmstrip of about seven frames"},
@@ -451,6 +487,11 @@ bool parse_arguments(const CommandSpec& command, const std::vector<std::string>&
     }
   }
   const std::size_t expected = command.positional_names.size();
+  for (std::size_t k = 0; k < parsed.positional.size() && k < expected; ++k) {
+    // "" would otherwise surface as ": cannot read file", naming nothing.
+    if (parsed.positional[k].empty())
+      fail_usage(command, "empty file name given for " + std::string(command.positional_names[k]));
+  }
   if (parsed.positional.size() < expected) {
     fail_usage(command, "missing argument " +
                             std::string(command.positional_names[parsed.positional.size()]));

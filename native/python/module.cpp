@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "stickmorph/argument_limits.h"
 #include "stickmorph/compatibility.h"
 #include "stickmorph/compatible_triangulation.h"
 #include "stickmorph/decomposition.h"
@@ -333,6 +334,27 @@ long long to_count(const py::object& object, const std::string& name) {
   return result;
 }
 
+// The name of a choice such as steiner= or method=. Declared as a Python
+// object rather than std::string so that a wrong type (None, a number) is an
+// InvalidArgumentError naming the argument, not pybind11's multi-line
+// TypeError listing the whole signature.
+std::string to_name(const py::object& object, const std::string& name) {
+  if (!py::isinstance<py::str>(object))
+    throw sm::InvalidArgumentError(name + " must be a str, got " +
+                                   py::str(py::type::of(object).attr("__name__")).cast<std::string>());
+  return object.cast<std::string>();
+}
+
+// A yes/no argument such as verify=. Only True and False (and NumPy's
+// booleans): verify="no" would be truthy, the opposite of what was meant.
+bool to_flag(const py::object& object, const std::string& name) {
+  if (PyBool_Check(object.ptr())) return object.ptr() == Py_True;
+  const py::object numpy_bool = py::module_::import("numpy").attr("bool_");
+  if (py::isinstance(object, numpy_bool)) return object.cast<bool>();
+  throw sm::InvalidArgumentError(name + " must be True or False, got " +
+                                 py::str(py::type::of(object).attr("__name__")).cast<std::string>());
+}
+
 // The frame count, checked before any work with the engine's own wording
 // (morph_triangulation checks it too, but only after triangulating).
 int to_frame_count(const py::object& object) {
@@ -355,10 +377,9 @@ sm::FigureTriangulationOptions to_triangulation_options(const std::string& stein
   if (sides < 3)
     throw sm::InvalidArgumentError("the enclosure needs at least 3 sides, got " +
                                    py::str(enclosure_sides).cast<std::string>());
-  if (sides > std::numeric_limits<int>::max())
-    throw sm::InvalidArgumentError("the enclosure can have at most " +
-                                   std::to_string(std::numeric_limits<int>::max()) + " sides, got " +
-                                   py::str(enclosure_sides).cast<std::string>());
+  if (sides > sm::kMaxEnclosureSides)
+    throw sm::InvalidArgumentError("the enclosure can have at most " + std::to_string(sm::kMaxEnclosureSides) +
+                                   " sides, got " + py::str(enclosure_sides).cast<std::string>());
   options.enclosure_sides = static_cast<int>(sides);
   return options;
 }
@@ -561,10 +582,26 @@ Raises:
   m.def(
       "load_figure",
       [](const py::object& path) {
+        const py::module_ os = py::module_::import("os");
+        if (!py::isinstance<py::str>(path) && !py::isinstance<py::bytes>(path) &&
+            !py::isinstance(path, os.attr("PathLike")))
+          throw sm::InvalidArgumentError("path must be a str, bytes or os.PathLike, got " +
+                                         py::str(py::type::of(path).attr("__name__")).cast<std::string>());
         // os.fsencode gives the bytes the OS uses for str (surrogate escapes
         // included), bytes and os.PathLike alike.
-        const std::string file =
-            py::module_::import("os").attr("fsencode")(path).cast<std::string>();
+        py::object encoded;
+        try {
+          encoded = os.attr("fsencode")(path);
+        } catch (py::error_already_set& e) {
+          // A PathLike whose __fspath__ returns something else.
+          throw sm::InvalidArgumentError("path cannot be used as a file name: " +
+                                         py::str(e.value()).cast<std::string>());
+        }
+        const std::string file = encoded.cast<std::string>();
+        // The C library stops at a NUL byte, so "a\0b" would open "a".
+        if (file.find('\0') != std::string::npos)
+          throw sm::InvalidArgumentError("path contains a NUL byte");
+        if (file.empty()) throw sm::InvalidArgumentError("path is an empty file name");
         sm::StickFigure figure;
         {
           py::gil_scoped_release release;
@@ -717,14 +754,19 @@ Raises:
 
   m.def(
       "compatible_triangulation",
-      [](const py::object& source, const py::object& target, const std::string& steiner,
-         const py::object& corners, int smoothing_rounds) {
+      [](const py::object& source, const py::object& target, const py::object& steiner,
+         const py::object& corners, const py::object& smoothing_rounds) {
         sm::CompatibleTriangulationOptions options;
-        options.method = sm::parse_steiner_method(steiner);
-        if (smoothing_rounds < 0)
+        options.method = sm::parse_steiner_method(to_name(steiner, "steiner"));
+        const long long rounds = to_count(smoothing_rounds, "smoothing_rounds");
+        if (rounds < 0)
           throw sm::InvalidArgumentError("smoothing_rounds must be at least 0, got " +
-                                         std::to_string(smoothing_rounds));
-        options.smoothing_rounds = smoothing_rounds;
+                                         py::str(smoothing_rounds).cast<std::string>());
+        if (rounds > sm::kMaxSmoothingRounds)
+          throw sm::InvalidArgumentError("smoothing_rounds must be at most " +
+                                         std::to_string(sm::kMaxSmoothingRounds) + ", got " +
+                                         py::str(smoothing_rounds).cast<std::string>());
+        options.smoothing_rounds = static_cast<int>(rounds);
 
         sm::PolygonPair pair;
         pair.source_positions = to_vertices(source, "source");
@@ -786,7 +828,7 @@ Args:
     simple polygons, e.g. a face with a dangling edge walked on both sides).
     Default: 0, 1, ..., #V-1, a simple polygon through every vertex in order.
   smoothing_rounds: rounds of Laplacian smoothing of the Steiner vertices in
-    each polygon (>= 0); a move is kept only if the triangulation stays valid
+    each polygon (0 to 1000); a move is kept only if the triangulation stays valid
     and its smallest angle does not shrink.
 
 Returns:
@@ -816,8 +858,9 @@ Raises:
   m.def(
       "triangulate_figures",
       [](const py::object& source, const py::object& target, const py::object& edges,
-         const py::object& target_edges, const std::string& steiner, const py::object& enclosure_sides) {
-        const sm::FigureTriangulationOptions options = to_triangulation_options(steiner, enclosure_sides);
+         const py::object& target_edges, const py::object& steiner, const py::object& enclosure_sides) {
+        const sm::FigureTriangulationOptions options =
+            to_triangulation_options(to_name(steiner, "steiner"), enclosure_sides);
         const auto figures = make_figure_pair(source, target, edges, target_edges, "source", "target");
         sm::FigureTriangulation triangulation;
         sm::FigureTriangulationStats stats;
@@ -848,7 +891,7 @@ Args:
     order and direction may differ from edges.
   steiner: Steiner vertex placement in the faces, "improved" (default),
     "sg2001" or "aronov" (see compatible_triangulation).
-  enclosure_sides: sides k of the common regular enclosure, at least 3.
+  enclosure_sides: sides k of the common regular enclosure, 3 to 1000.
 
 Returns:
   dict (FORMAT.md's triangulation object) with
@@ -879,19 +922,20 @@ Raises:
   m.def(
       "morph",
       [](const py::object& source_xy, const py::object& target_xy, const py::object& edges,
-         const py::object& frames, const std::string& steiner, const std::string& weights,
-         const py::object& enclosure_sides, const std::string& method, bool verify,
+         const py::object& frames, const py::object& steiner, const py::object& weights,
+         const py::object& enclosure_sides, const py::object& method_object, const py::object& verify,
          const py::object& target_edges) {
         // Arguments first, figures second, as the CLI does.
         sm::MorphOptions options;
         options.frames = to_frame_count(frames);
-        options.weights = sm::parse_weight_kind(weights);
-        options.verify = verify;
+        options.weights = sm::parse_weight_kind(to_name(weights, "weights"));
+        options.verify = to_flag(verify, "verify");
+        const std::string method = to_name(method_object, "method");
         if (method != "barycentric" && method != "linear")
           throw sm::InvalidArgumentError("unknown morph method '" + method +
                                          "' (choose barycentric or linear)");
         const sm::FigureTriangulationOptions tri_options =
-            to_triangulation_options(steiner, enclosure_sides);
+            to_triangulation_options(to_name(steiner, "steiner"), enclosure_sides);
         const auto figures =
             make_figure_pair(source_xy, target_xy, edges, target_edges, "source_xy", "target_xy");
         const sm::StickFigure& source = figures.first;
@@ -999,7 +1043,7 @@ Args:
   steiner: "improved" (default), "sg2001" or "aronov", as for
     triangulate_figures.
   weights: "mvc" (mean value coordinates, default), "uniform" or "floater".
-  enclosure_sides: sides of the common regular enclosure, at least 3.
+  enclosure_sides: sides of the common regular enclosure, 3 to 1000.
   method: "barycentric" (default) or "linear".
   verify: check every frame exactly (barycentric only).
   target_edges: optional #E by 2 integer array-like, the target's edge list.
