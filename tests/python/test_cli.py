@@ -11,7 +11,6 @@ stalling the suite.
 """
 import json
 import os
-import random
 import re
 import subprocess
 
@@ -119,161 +118,9 @@ def test_every_figure_is_compatible_with_itself(cli, data_dir, path):
         assert run(cli, "check", figure, figure).stdout == "compatible\n"
 
 
-# Malformed files under tests/data/malformed/ -> fragments the message must
-# contain. Line and column point at the offending token; figure-rule
-# messages name the vertex and edge indices.
-MALFORMED = {
-    # not JSON
-    "empty.json": ["line 1, column 1", "empty input"],
-    "whitespace_only.json": ["no JSON value"],
-    "binary.bin": ["line 1, column 1", "unexpected byte 0x00"],
-    "syntax_missing_comma.json": ["line 8, column 3", "expected ',' or '}'"],
-    "unclosed.json": ["end of input", "line 8, column 12 is not closed"],
-    "trailing_comma.json": ["line 11, column 11", "trailing comma"],
-    "comment.json": ["line 2, column 3", "comments are not allowed"],
-    "duplicate_key.json": ["line 9, column 3", 'duplicate key "edges"'],
-    "trailing_garbage.json": ["line 14, column 1", "after the JSON value"],
-    "single_quotes.json": ["line 2, column 3", "double quotes"],
-    "leading_zero.json": ["line 4, column 6", "leading zero"],
-    "nan.json": ["line 4, column 6", "NaN is not a JSON number"],
-    "infinity.json": ["line 5, column 9", "-Infinity is not a JSON number"],
-    "overflow.json": ["line 6, column 9", "number 1e400 overflows a double"],
-    # JSON of the wrong shape
-    "top_level_array.json": ["line 1, column 1", "JSON object", "got an array"],
-    "missing_vertices.json": ['missing field "vertices"'],
-    "missing_edges.json": ['missing field "edges"'],
-    "vertices_not_array.json": ["line 2, column 15", '"vertices" must be an array', "got an object"],
-    "edges_not_array.json": ["line 3, column 12", '"edges" must be an array', "got a string"],
-    "vertex_wrong_length.json": ["line 5, column 5", "vertex 2 must be an array of 2 numbers",
-                                 "got an array of 3 values"],
-    "vertex_not_array.json": ["line 4, column 5", "vertex 1 must be an array of 2 numbers",
-                              "got a string"],
-    "string_coordinate.json": ["line 6, column 9", "vertex 3: expected a number for y",
-                               "got a string"],
-    "null_coordinate.json": ["line 3, column 6", "vertex 0: expected a number for x", "got null"],
-    "edge_wrong_length.json": ["line 10, column 5", "edge 1 must be an array of 2 vertex indices"],
-    "string_index.json": ["line 11, column 6", "edge 2: expected a vertex index", "got a string"],
-    "non_integer_index.json": ["line 10, column 6", "edge 1: vertex index 1.5 is not an integer"],
-    "huge_index.json": ["line 11, column 9", "edge 2", "outside the 64-bit integer range"],
-    "name_not_string.json": ["line 2, column 11", '"name" must be a string'],
-    # valid JSON, invalid figure
-    "no_vertices.json": ["no vertices"],
-    "coordinate_too_large.json": ["vertex 2", "1e+101"],
-    "negative_index.json": ["edge 2", "-1"],
-    "index_out_of_range.json": ["edge 1", "vertex 4", "out of range"],
-    "self_loop.json": ["edge 3", "self-loop", "vertex 3"],
-    "duplicate_edge.json": ["edges 0 and 3", "vertices 0 and 1"],
-    "duplicate_edge_reversed.json": ["edges 1 and 3", "vertices 1 and 2"],
-    "coincident_vertices.json": ["vertices 1 and 3", "coincide"],
-    "crossing_edges.json": ["edges 3 (0-2) and 4 (1-3)", "cross"],
-    "collinear_overlap.json": ["edges 0 (0-1) and 3 (0-4)", "overlap"],
-    "vertex_on_edge.json": ["vertex 4", "edge 0 (0-1)"],
-    "disconnected.json": ["disconnected", "vertex 4"],
-}
-
-
-def test_every_malformed_file_is_listed(data_dir):
-    on_disk = {p.name for p in (data_dir / "malformed").iterdir()}
-    assert on_disk == set(MALFORMED)
-
-
-@pytest.mark.parametrize("name", sorted(MALFORMED))
-@pytest.mark.parametrize("position", ["source", "target"])
-def test_malformed_file_is_one_error_line(cli, data_dir, name, position):
-    bad = data_dir / "malformed" / name
-    good = pair(data_dir, "compatible", "letter_a")[0]
-    arguments = (bad, good) if position == "source" else (good, bad)
-    message = assert_single_error_line(run(cli, "check", *arguments))
-    assert message.startswith(f"{bad}: "), message
-    for fragment in MALFORMED[name]:
-        assert fragment in message, (fragment, message)
-
-
-def test_missing_file(cli, data_dir, tmp_path):
-    missing = tmp_path / "missing.json"
-    good = pair(data_dir, "compatible", "letter_a")[0]
-    message = assert_single_error_line(run(cli, "check", good, missing))
-    assert message == f"{missing}: cannot read file: No such file or directory"
-
-
-def test_directory_instead_of_file(cli, data_dir, tmp_path):
-    good = pair(data_dir, "compatible", "letter_a")[0]
-    message = assert_single_error_line(run(cli, "check", tmp_path, good))
-    assert message == f"{tmp_path}: cannot read file: Is a directory"
-
-
-@pytest.mark.skipif(os.geteuid() == 0, reason="root reads files regardless of permissions")
-def test_unreadable_file(cli, data_dir, tmp_path):
-    locked = tmp_path / "locked.json"
-    locked.write_text('{"vertices": [[0, 0]], "edges": []}')
-    locked.chmod(0)
-    message = assert_single_error_line(run(cli, "check", locked, locked))
-    assert message == f"{locked}: cannot read file: Permission denied"
-
-
-# Hostile inputs built at test time: each must end in one error line, fast.
-def deep_arrays():
-    return "[" * 100000
-
-
-def deep_objects():
-    return '{"vertices":' * 100000
-
-
-def long_number():
-    return '{"vertices": [[1' + "0" * 1000000 + ', 0]], "edges": []}'
-
-
-def random_bytes():
-    return bytes(random.Random(7).randrange(256) for _ in range(1 << 20))
-
-
-def nul_bytes():
-    return b"\0" * 4096
-
-
-HOSTILE = {
-    "deep_arrays": (deep_arrays, ["line 1, column 257", "nest deeper than 256 levels"]),
-    "deep_objects": (deep_objects, ["nest deeper than 256 levels"]),
-    "long_number": (long_number, ["overflows a double"]),
-    "random_bytes": (random_bytes, ["line 1, column 1"]),
-    "nul_bytes": (nul_bytes, ["unexpected byte 0x00"]),
-}
-
-
-@pytest.mark.parametrize("name", sorted(HOSTILE))
-def test_hostile_input_is_one_error_line(cli, tmp_path, name):
-    make, fragments = HOSTILE[name]
-    content = make()
-    path = tmp_path / f"{name}.json"
-    if isinstance(content, bytes):
-        path.write_bytes(content)
-    else:
-        path.write_text(content)
-    message = assert_single_error_line(run(cli, "check", path, path))
-    assert len(message) < 1000  # hostile content is not echoed in full
-    for fragment in fragments:
-        assert fragment in message, (fragment, message)
-
-
-def test_oversized_file_is_refused(cli, tmp_path):
-    big = tmp_path / "big.json"
-    with open(big, "wb") as sparse:
-        sparse.truncate((64 << 20) + 1)
-    message = assert_single_error_line(run(cli, "check", big, big))
-    assert message == f"{big}: cannot read file: larger than 64 MiB"
-
-
-@pytest.mark.skipif(not os.path.exists("/dev/zero"), reason="needs /dev/zero")
-def test_endless_input_is_refused(cli):
-    message = assert_single_error_line(run(cli, "check", "/dev/zero", "/dev/zero"))
-    assert message == "/dev/zero: cannot read file: larger than 64 MiB"
-
-
-def test_line_breaks_in_a_path_stay_on_one_line(cli, tmp_path):
-    odd = tmp_path / "two\nlines.json"
-    message = assert_single_error_line(run(cli, "check", odd, odd))
-    assert "two\\nlines.json" in message
+# Malformed files, unreadable and hostile inputs and usage errors are in the
+# bad-input catalogue (tests/data/bad_inputs/catalogue.json), which
+# test_bad_inputs.py runs against every command.
 
 
 def write_figure(path, vertices, edges, **extra):
@@ -334,23 +181,6 @@ def test_command_help(cli):
 def test_version(cli):
     result = run(cli, "--version")
     assert (result.returncode, result.stdout, result.stderr) == (0, "stickmorph 0.1.0\n", "")
-
-
-@pytest.mark.parametrize("arguments, fragments", [
-    ([], ["missing command", "check"]),
-    (["frobnicate"], ["unknown command 'frobnicate'", "commands: check"]),
-    (["--frobnicate"], ["unknown option '--frobnicate'"]),
-    (["--version", "extra"], ["--version takes no arguments"]),
-    (["check"], ["check: missing argument SOURCE.json"]),
-    (["check", "a.json"], ["check: missing argument TARGET.json"]),
-    (["check", "a.json", "b.json", "c.json"], ["unexpected extra argument 'c.json'"]),
-    (["check", "--frames", "3", "a.json", "b.json"], ["check: unknown option '--frames'"]),
-    (["check", "-x", "a.json", "b.json"], ["check: unknown option '-x'"]),
-])
-def test_usage_errors(cli, arguments, fragments):
-    message = assert_single_error_line(run(cli, *arguments))
-    for fragment in fragments:
-        assert fragment in message, (fragment, message)
 
 
 def test_double_dash_ends_options(cli, data_dir, tmp_path):

@@ -304,13 +304,6 @@ def test_ragged_vertices_are_refused():
     assert str(info.value).startswith("vertices cannot be converted to an array: ")
 
 
-def test_none_is_refused():
-    with pytest.raises(stickmorph.InvalidArgumentError):
-        stickmorph.validate(None, [[0, 1]])
-    with pytest.raises(stickmorph.InvalidArgumentError):
-        stickmorph.validate(SQUARE, None)
-
-
 # --------------------------------------------------------------------------
 # load_figure
 
