@@ -55,6 +55,10 @@ EASE_OVERSAMPLING = 8
 
 MAX_ENGINE_FRAMES = 100000
 
+# The engine's bound on the enclosure's sides (native/stickmorph/argument_limits.h):
+# the annulus costs grow quadratically with them, so more is a hang.
+MAX_ENCLOSURE_SIDES = 1000
+
 
 class StickMorphError(Exception):
     """A problem with the user's input, reported as an ERROR; message is for the user."""
@@ -302,8 +306,13 @@ def prepare_pair(source_world, source_edges, source_faces: int, source_name: str
     message = compare_edge_sets(source_edges, target_edges, source_name, target_name)
     if message:
         raise StickMorphError(message)
-    if not (np.isfinite(source_world).all() and np.isfinite(target_world).all()):
-        raise StickMorphError("a vertex has a non-finite coordinate")
+    for name, world in ((source_name, source_world), (target_name, target_world)):
+        bad = np.flatnonzero(~np.isfinite(world).all(axis=1))
+        if len(bad):
+            raise StickMorphError(
+                f"'{name}': vertex {int(bad[0])} has a non-finite coordinate "
+                f"({', '.join(repr(float(c)) for c in world[bad[0]])})"
+                + (f" and {len(bad) - 1} more vertices too" if len(bad) > 1 else ""))
 
     fitted = fit_plane(source_world, target_world, plane)
     source_xy, source_h = project(source_world, fitted)
@@ -382,8 +391,10 @@ def compute_morph(prepared: PreparedPair, frame_count: int, *, steiner: str = "i
                   source_name: str = "source", target_name: str = "target",
                   verify: bool = True) -> MorphResult:
     """The morph's frames in world space. Raises StickMorphError."""
-    if frame_count < 2:
-        raise StickMorphError(f"at least 2 frames are needed, got {frame_count}")
+    if not 2 <= frame_count <= MAX_ENGINE_FRAMES:
+        raise StickMorphError(f"the number of frames must be between 2 and {MAX_ENGINE_FRAMES}, got {frame_count}")
+    if not 3 <= enclosure_sides <= MAX_ENCLOSURE_SIDES:
+        raise StickMorphError(f"the enclosure needs 3 to {MAX_ENCLOSURE_SIDES} sides, got {enclosure_sides}")
     if easing not in EASINGS:
         raise StickMorphError(f"unknown easing {easing!r}")
     engine = load_engine()

@@ -36,7 +36,7 @@ def option_properties():
             default="mvc"),
         "enclosure_sides": IntProperty(
             name="Enclosure Sides", description="Sides of the regular polygon enclosing both figures",
-            default=6, min=3, soft_max=64),
+            default=6, min=3, max=core.MAX_ENCLOSURE_SIDES, soft_max=64),
         "plane": EnumProperty(
             name="Plane", description="The plane the figures are drawn in",
             items=(("AUTO", "Auto", "The best-fit plane of both meshes"),
