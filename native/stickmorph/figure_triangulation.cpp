@@ -71,6 +71,27 @@ ExteriorCorner exterior_corner(const StickFigure& f, const Decomposition& d, int
   return c;
 }
 
+// The position in the target's exterior sequence of corner `c` of the
+// source's. Compatible figures have the same exterior sequence only up to
+// rotation: Algorithm 1 starts each walk at a dart that depends on the order
+// of the figure's edge list, so position c in one list is in general another
+// corner in the other. A corner is identified by its vertex and the next
+// vertex of the walk, since the walk crosses every dart once.
+int matching_exterior_corner(const Decomposition& source_dec, const Decomposition& target_dec, int c) {
+  const CyclicSequence& source_ext = source_dec.sequences[source_dec.exterior];
+  const CyclicSequence& target_ext = target_dec.sequences[target_dec.exterior];
+  if (source_ext.darts.empty()) return c;  // a single vertex: one corner
+  const int m = int(source_ext.vertices.size());
+  const int vertex = source_ext.vertices[c], next = source_ext.vertices[(c + 1) % m];
+  if (int(target_ext.vertices.size()) == m)
+    for (int t = 0; t < m; ++t)
+      if (target_ext.vertices[t] == vertex && target_ext.vertices[(t + 1) % m] == next) return t;
+  throw InternalError("annulus cut: corner " + std::to_string(c) + " (vertex " + std::to_string(vertex) +
+                      ", next " + std::to_string(next) +
+                      ") of the source's exterior sequence is missing from the target's, "
+                      "although the figures were found compatible");
+}
+
 bool corner_admits(const StickFigure& f, const ExteriorCorner& c, const Vec2& q) {
   const bool lone = c.next < 0;
   const Vec2& v = f.vertices[c.vertex];
@@ -237,7 +258,7 @@ Cut choose_cut(const StickFigure& source, const Decomposition& source_dec, const
   // A straight cut valid in both figures needs no Steiner vertex.
   for (const auto& [c, j] : candidates) {
     const ExteriorCorner sc = exterior_corner(source, source_dec, c);
-    const ExteriorCorner tc = exterior_corner(target, target_dec, c);
+    const ExteriorCorner tc = exterior_corner(target, target_dec, matching_exterior_corner(source_dec, target_dec, c));
     if (corner_admits(source, sc, enclosure[j]) && corner_admits(target, tc, enclosure[j]) &&
         segment_is_free(source, sc.vertex, enclosure[j]) && segment_is_free(target, tc.vertex, enclosure[j])) {
       Cut cut;
@@ -253,7 +274,7 @@ Cut choose_cut(const StickFigure& source, const Decomposition& source_dec, const
   std::size_t best_bends = std::numeric_limits<std::size_t>::max();
   for (const auto& [c, j] : candidates) {
     const ExteriorCorner sc = exterior_corner(source, source_dec, c);
-    const ExteriorCorner tc = exterior_corner(target, target_dec, c);
+    const ExteriorCorner tc = exterior_corner(target, target_dec, matching_exterior_corner(source_dec, target_dec, c));
     Cut cut;
     cut.corner = sc;
     cut.enclosure_index = j;

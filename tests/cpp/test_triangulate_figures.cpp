@@ -93,6 +93,22 @@ TEST_CASE("trees, single edges, single vertices and collinear polylines", "[tria
   check_all_methods(line, polyline({{4, 0}, {3, 0}, {2, 0}, {1, 0}, {0, 0}}), 3);
 }
 
+TEST_CASE("the target's edges listed in another order and direction", "[triangulate_figures]") {
+  // Found by fuzz_morph_pair (tests/data/fuzz/regressions/morph_pair): the
+  // annulus cut took corner c of the source's exterior sequence to be corner
+  // c of the target's, but Algorithm 1 starts each walk at a dart that
+  // depends on the edge order, so in the target the cut left from another
+  // corner and crossed the figure ("polygon is not weakly simple").
+  const StickFigure star = figure({{0, 0}, {20, 0}, {0, 20}, {-20, 0}, {0, -20}, {14, 14}},
+                                  {{1, 0}, {2, 0}, {3, 0}, {4, 0}, {5, 0}});
+  const StickFigure moved_star = figure({{0, 0}, {20, 3.75}, {-3.75, 20}, {-20, -3.75}, {3.75, -20}, {12.125, 15.875}},
+                                        {{0, 5}, {0, 4}, {0, 3}, {0, 2}, {0, 1}});
+  for (int sides : {3, 5, 6}) {
+    INFO("enclosure sides " << sides);
+    check_all_methods(star, moved_star, sides);
+  }
+}
+
 TEST_CASE("figures far apart and at very different scales", "[triangulate_figures]") {
   std::mt19937 rng(9);
   const StickFigure f = random_plane_graph(rng, 14, 0.5);
