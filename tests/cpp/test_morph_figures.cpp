@@ -2,12 +2,17 @@
 // (morph_triangulation) on whole stick figures, every frame verified.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
 #include <random>
 
 #include "figures.h"
 #include "polygons.h"
+#include "random_pairs.h"
 #include "stickmorph/compatibility.h"
 #include "stickmorph/figure_io.h"
 #include "stickmorph/figure_triangulation.h"
@@ -20,27 +25,26 @@ using namespace stickmorph::test;
 namespace {
 
 // Morphs with the default options and checks every frame again, apart from
-// the morph's own check: endpoints exact, every frame a stick figure with
-// the source's cyclic sequences.
+// the morph's own check (morph_and_verify in random_pairs.h: the
+// triangulation re-verified, endpoints exact, every triangle
+// counter-clockwise and every frame a stick figure with the source's cyclic
+// sequences).
 void check_morph(const StickFigure& s, const StickFigure& t, int frames = 12) {
   REQUIRE(check_compatibility(s, t).compatible());
-  const FigureTriangulation tri = triangulate_figures(s, t);
-  MorphOptions options;
-  options.frames = frames;
-  const MorphResult result = morph_triangulation(tri, s, options);
-  REQUIRE(int(result.frames.size()) == frames);
-  const std::size_t n = s.vertices.size();
-  for (std::size_t v = 0; v < n; ++v) {
-    CHECK(result.frames.front()[v] == s.vertices[v]);
-    CHECK(result.frames.back()[v] == t.vertices[v]);
+  CHECK(morph_and_verify(s, t, frames) == "");
+}
+
+// The pairs of a regressions directory: (source path, target path).
+std::vector<std::pair<std::string, std::string>> regression_pairs(const std::string& dir) {
+  std::vector<std::pair<std::string, std::string>> pairs;
+  const std::string suffix = ".source.json";
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const std::string path = entry.path().string();
+    if (path.size() < suffix.size() || path.compare(path.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
+    pairs.push_back({path, path.substr(0, path.size() - suffix.size()) + ".target.json"});
   }
-  for (int f = 0; f < frames; ++f) {
-    const std::vector<Vec2> figure(result.frames[f].begin(), result.frames[f].begin() + long(n));
-    INFO("frame " << f);
-    CHECK(is_frame_valid(s, figure));
-    for (const auto& tr : tri.triangles)
-      CHECK(orientation(result.frames[f][tr[0]], result.frames[f][tr[1]], result.frames[f][tr[2]]) > 0);
-  }
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
 }
 
 }  // namespace
@@ -98,15 +102,30 @@ TEST_CASE("random compatible stick figures morph with every frame verified", "[m
 
 TEST_CASE("regression pairs in tests/data/regressions morph with every frame verified", "[morph_figures]") {
   // Each pair once failed; see the name field of its source file.
-  int replayed = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(STICKMORPH_TEST_DATA) + "/regressions")) {
-    const std::string path = entry.path().string();
-    const std::string suffix = ".source.json";
-    if (path.size() < suffix.size() || path.compare(path.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
-    const std::string target = path.substr(0, path.size() - suffix.size()) + ".target.json";
-    INFO(path);
-    check_morph(read_figure_file(path), read_figure_file(target));
-    ++replayed;
+  const auto pairs = regression_pairs(std::string(STICKMORPH_TEST_DATA) + "/regressions");
+  for (const auto& [source, target] : pairs) {
+    INFO(source);
+    check_morph(read_figure_file(source), read_figure_file(target));
   }
-  CHECK(replayed >= 1);
+  CHECK(pairs.size() >= 1);
+}
+
+TEST_CASE("open regression pairs in tests/data/regressions/open are refused, never morphed invalidly",
+          "[morph_figures]") {
+  // Pairs found by stickmorph_random_pairs that the engine cannot morph yet:
+  // valid and compatible (checked here), yet the spiderweb embedding fails
+  // in floating point next to a vertex very close to an edge (see each
+  // source's name field). Until that is fixed the engine must refuse them
+  // with a VerificationError, never return an invalid frame or fail
+  // otherwise. A pair that starts to pass makes this test fail: move it up
+  // to tests/data/regressions, where it is replayed as a passing case.
+  const auto pairs = regression_pairs(std::string(STICKMORPH_TEST_DATA) + "/regressions/open");
+  for (const auto& [source_path, target_path] : pairs) {
+    INFO(source_path);
+    const StickFigure source = read_figure_file(source_path), target = read_figure_file(target_path);
+    REQUIRE(check_compatibility(source, target).compatible());
+    const std::string outcome = morph_and_verify(source, target, 12);
+    INFO(outcome);
+    CHECK(outcome.rfind("VerificationError: ", 0) == 0);
+  }
 }
