@@ -17,6 +17,8 @@ packages=(
   python3-dev
   python3-numpy
   python3-pytest
+  clang-14            # scripts/sanitize.sh: clang++-14 with ASan, UBSan, libFuzzer
+  libclang-rt-14-dev  # the sanitizer and libFuzzer runtimes of clang 14
 )
 
 missing=()

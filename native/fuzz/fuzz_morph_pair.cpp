@@ -1,0 +1,242 @@
+// Fuzz target: the engine end to end on a pair of figures.
+//
+// check_compatibility -> triangulate_figures -> morph_triangulation (every
+// frame verified exactly) -> linear_morph, with these oracles besides the
+// typed-error contract of fuzz_common.h:
+//  - triangulate_figures succeeds or fails with a non-compatibility error
+//    exactly when check_compatibility says compatible; on incompatible
+//    figures it must throw IncompatibleFiguresError.
+//  - the triangulation's first n nodes are the figures' vertices, bitwise.
+//  - the morph has the requested number of frames, its times run from 0 to
+//    1, and its first and last frames are exactly the triangulation's source
+//    and target positions (morph.h).
+//
+// Two input encodings, told apart by the first byte:
+//
+// '{' (JSON): a pair document {"source": FIGURE, "target": FIGURE} with
+//   optional "steiner" and "weights" names (as on the CLI). Seeds are the
+//   pairs of tests/data; 3 frames. aronov and sg2001 build spiderwebs that
+//   grow quadratically with the face size (README, Limits), so with those
+//   methods inputs above kMaxVerticesForSpiderwebs vertices are skipped:
+//   they are legitimately slow, not findings.
+//
+// anything else (binary): a small figure on an integer grid and a target
+//   that moves each vertex a little, so that most valid inputs are
+//   compatible and reach the triangulation and the morph:
+//     byte 0: options: bits 0-1 Steiner method, 2-3 weights, 4-5 frames - 2,
+//             bit 6 target edges reversed in order and direction, bit 7
+//             unused
+//     byte 1: n - 1 (n = 1 + byte % 16 vertices)
+//     byte 2: scale exponent e = byte - 128: coordinates are multiples of 2^e
+//     byte 3: enclosure sides - 3 (3 + byte % 8)
+//     then n (x, y) source positions, signed bytes times 2^e
+//     then n - 1 tree edges: vertex i joins vertex (byte % i), so the edges
+//             connect every vertex
+//     then one byte k and k % (n + 1) extra edges (two bytes each, % n)
+//     then n (dx, dy) target moves, signed bytes times 2^(e - 4)
+//   Missing bytes read as 0.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fuzz_common.h"
+#include "stickmorph/compatibility.h"
+#include "stickmorph/figure_io.h"
+#include "stickmorph/figure_triangulation.h"
+#include "stickmorph/json.h"
+#include "stickmorph/morph.h"
+
+using namespace stickmorph;
+
+namespace {
+
+constexpr std::size_t kMaxVerticesForSpiderwebs = 24;
+constexpr int kJsonFrames = 3;
+
+struct PairInput {
+  StickFigure source;
+  StickFigure target;
+  FigureTriangulationOptions triangulation;
+  MorphOptions morph;
+};
+
+bool same_positions(const Vec2* a, const Vec2* b, std::size_t count) {
+  return count == 0 || std::memcmp(a, b, count * sizeof(Vec2)) == 0;
+}
+
+// The pair document: each figure is written back to text and read with
+// parse_figure, the reader the CLI uses, so its validation runs unchanged.
+PairInput decode_json_pair(const std::string& text) {
+  const JsonValue document = parse_json(text);
+  const JsonValue* source = document.find("source");
+  const JsonValue* target = document.find("target");
+  if (source == nullptr || target == nullptr) {
+    throw JsonError("pair document without \"source\" or \"target\"");
+  }
+  PairInput input;
+  input.source = parse_figure(to_json(*source), "source");
+  input.target = parse_figure(to_json(*target), "target");
+  if (const JsonValue* steiner = document.find("steiner")) {
+    input.triangulation.method = parse_steiner_method(steiner->as_string());
+  }
+  if (const JsonValue* weights = document.find("weights")) {
+    input.morph.weights = parse_weight_kind(weights->as_string());
+  }
+  input.morph.frames = kJsonFrames;
+  return input;
+}
+
+class ByteReader {
+ public:
+  ByteReader(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
+  std::uint8_t next() { return position_ < size_ ? data_[position_++] : 0; }
+  int next_signed() { return static_cast<std::int8_t>(next()); }
+
+ private:
+  const std::uint8_t* data_;
+  std::size_t size_;
+  std::size_t position_ = 0;
+};
+
+PairInput decode_binary_pair(const std::uint8_t* data, std::size_t size) {
+  ByteReader bytes(data, size);
+  const std::uint8_t flags = bytes.next();
+  const int n = 1 + bytes.next() % 16;
+  const int exponent = int(bytes.next()) - 128;
+  PairInput input;
+  input.triangulation.enclosure_sides = 3 + bytes.next() % 8;
+  static constexpr SteinerMethod kMethods[] = {SteinerMethod::Improved, SteinerMethod::Sg2001,
+                                               SteinerMethod::Aronov, SteinerMethod::Improved};
+  static constexpr WeightKind kWeights[] = {WeightKind::MeanValue, WeightKind::Uniform,
+                                            WeightKind::Floater, WeightKind::MeanValue};
+  input.triangulation.method = kMethods[flags & 3];
+  input.morph.weights = kWeights[(flags >> 2) & 3];
+  input.morph.frames = 2 + ((flags >> 4) & 3);
+  const bool reverse_target_edges = (flags >> 6) & 1;
+
+  std::vector<Vec2> source(n);
+  for (Vec2& p : source) {
+    p[0] = std::ldexp(double(bytes.next_signed()), exponent);
+    p[1] = std::ldexp(double(bytes.next_signed()), exponent);
+  }
+  std::vector<std::array<std::int64_t, 2>> edges;
+  for (int i = 1; i < n; ++i) edges.push_back({i, bytes.next() % i});
+  const int extra = bytes.next() % (n + 1);
+  for (int k = 0; k < extra; ++k) {
+    const std::int64_t a = bytes.next() % n;
+    edges.push_back({a, bytes.next() % n});
+  }
+  std::vector<Vec2> target = source;
+  for (Vec2& p : target) {
+    p[0] += std::ldexp(double(bytes.next_signed()), exponent - 4);
+    p[1] += std::ldexp(double(bytes.next_signed()), exponent - 4);
+  }
+  std::vector<std::array<std::int64_t, 2>> target_edges = edges;
+  if (reverse_target_edges) {
+    std::reverse(target_edges.begin(), target_edges.end());
+    for (auto& edge : target_edges) std::swap(edge[0], edge[1]);
+  }
+  input.source = make_stick_figure(std::move(source), edges, "source");
+  input.target = make_stick_figure(std::move(target), target_edges, "target");
+  return input;
+}
+
+void triangulate_and_morph(const PairInput& input);
+
+void morph_pair(const PairInput& input) {
+  const StickFigure& source = input.source;
+  const StickFigure& target = input.target;
+  const CompatibilityReport report = check_compatibility(source, target);
+  if (!report.compatible()) {
+    try {
+      triangulate_figures(source, target, input.triangulation);
+    } catch (const IncompatibleFiguresError&) {
+      fuzz::trace("incompatible: " + report.reason);
+      return;  // the expected answer
+    } catch (const Error& error) {
+      fuzz::report_finding(std::string("incompatible figures (") + report.reason +
+                           "), but triangulate_figures threw another error: " + error.what());
+    }
+    fuzz::report_finding("triangulate_figures accepted figures check_compatibility rejects: " +
+                         report.reason);
+  }
+  if (input.triangulation.method != SteinerMethod::Improved &&
+      source.vertices.size() > kMaxVerticesForSpiderwebs) {
+    fuzz::trace("skipped: spiderweb method on a large figure");
+    return;
+  }
+
+  // From here on both figures are valid and compatible and the options are
+  // valid, so the only acceptable error is the engine refusing a result it
+  // could not verify (VerificationError). An InvalidFigureError or
+  // InvalidArgumentError would be about something the engine built itself.
+  try {
+    triangulate_and_morph(input);
+  } catch (const VerificationError&) {
+    throw;
+  } catch (const InternalError&) {
+    throw;
+  } catch (const Error& error) {
+    fuzz::report_finding(std::string("valid compatible figures, but the engine threw: ") + error.what());
+  }
+}
+
+void triangulate_and_morph(const PairInput& input) {
+  const StickFigure& source = input.source;
+  const StickFigure& target = input.target;
+  const FigureTriangulation triangulation = triangulate_figures(source, target, input.triangulation);
+  const std::size_t n = source.vertices.size();
+  if (std::size_t(triangulation.figure_vertices) != n ||
+      triangulation.source.size() != std::size_t(triangulation.node_count()) ||
+      triangulation.target.size() != std::size_t(triangulation.node_count()) ||
+      !same_positions(triangulation.source.data(), source.vertices.data(), n) ||
+      !same_positions(triangulation.target.data(), target.vertices.data(), n)) {
+    fuzz::report_finding("the triangulation's figure nodes are not the input figures");
+  }
+
+  const MorphResult morph = morph_triangulation(triangulation, source, input.morph);
+  const std::size_t frames = std::size_t(input.morph.frames);
+  if (morph.frames.size() != frames || morph.times.size() != frames || morph.times.front() != 0.0 ||
+      morph.times.back() != 1.0) {
+    fuzz::report_finding("the morph has the wrong frame count or times");
+  }
+  const std::size_t nodes = triangulation.source.size();
+  for (const auto& frame : morph.frames) {
+    if (frame.size() != nodes) fuzz::report_finding("a morph frame has the wrong node count");
+  }
+  if (!same_positions(morph.frames.front().data(), triangulation.source.data(), nodes) ||
+      !same_positions(morph.frames.back().data(), triangulation.target.data(), nodes)) {
+    fuzz::report_finding("the morph's first or last frame is not the source or the target");
+  }
+
+  // The straight-line baseline on the same pair: it may self-intersect, but
+  // must not fail on a valid pair.
+  std::vector<int> invalid_frames;
+  const MorphResult linear = linear_morph(source, target, input.morph.frames, &invalid_frames);
+  if (linear.frames.size() != frames ||
+      !same_positions(linear.frames.front().data(), source.vertices.data(), n) ||
+      !same_positions(linear.frames.back().data(), target.vertices.data(), n)) {
+    fuzz::report_finding("linear_morph's end frames are not the input figures");
+  }
+  fuzz::trace("morphed: " + std::to_string(n) + " vertices, " +
+              std::to_string(triangulation.steiner_vertices) + " Steiner, " +
+              std::to_string(frames) + " frames");
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  fuzz::run_expecting_typed_errors([&] {
+    const PairInput input = size > 0 && data[0] == '{'
+                                ? decode_json_pair(std::string(reinterpret_cast<const char*>(data), size))
+                                : decode_binary_pair(data, size);
+    morph_pair(input);
+  });
+  return 0;
+}
