@@ -1,127 +1,178 @@
-// Benchmark of whole stick-figure morphs (Algorithm 3 + Floater-Gotsman):
-// Steiner counts, triangulation time, time per frame and peak memory
-// against size, for polylines, trees and triangulations.
+// Benchmark of whole stick-figure morphs (Algorithm 3 + Floater-Gotsman)
+// against size, on the corpus of bench_figures.h: Steiner vertices per
+// method, time per stage, time per frame, peak memory, and the straight-line
+// morph's self-intersecting frames next to ours.
 //
-// Not a test: it prints Markdown tables. Each case runs in a child process
-// so that its peak resident memory is its own.
+// Not a test: it measures. Every (case, method) runs in a child process of
+// its own, so that its peak resident memory (ru_maxrss from wait4) is its
+// own, a crash or an exhausted memory limit costs one cell and not the run,
+// and a time limit can stop it. Each result is one JSON object per line
+// (--json FILE); stdout gets a short Markdown summary per case and stderr the
+// progress.
 //
-//   stickmorph_benchmark_morph [--sizes 10,100,1000,10000] [--frames N]
+// The paper's spiderwebs (aronov, sg2001) grow quadratically on long thin
+// faces, so they are only run up to --aronov-max / --sg2001-max vertices.
+// No method is run in a family past the first size at which it hit the time
+// or memory limit. Every cell not run says why in its record.
+//
+//   stickmorph_benchmark_morph [--sizes 10,100,1000] [--families LIST] [--frames N]
+//       [--json FILE] [--aronov-max N] [--sg2001-max N] [--time-limit S]
+//       [--spiderweb-time-limit S] [--memory-limit-mib M]
+#include <signal.h>
 #include <sys/resource.h>
+#include <sys/time.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <Eigen/SparseLU>
+#include <cerrno>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <functional>
-#include <random>
+#include <iostream>
+#include <map>
+#include <new>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "bench_figures.h"
 #include "stickmorph/compatibility.h"
+#include "stickmorph/decomposition.h"
 #include "stickmorph/figure_triangulation.h"
+#include "stickmorph/frame_verification.h"
+#include "stickmorph/json.h"
 #include "stickmorph/morph.h"
 
-namespace stickmorph {
+namespace stickmorph::bench {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-StickFigure make(std::vector<Vec2> vertices, const std::vector<Edge>& edges) {
-  std::vector<std::array<std::int64_t, 2>> raw;
-  for (const Edge& e : edges) raw.push_back({e[0], e[1]});
-  return make_stick_figure(std::move(vertices), raw);
-}
+constexpr const char* kUsage =
+    "usage: stickmorph_benchmark_morph [--sizes 10,30,100,...] [--families LIST] [--frames N]\n"
+    "           [--json FILE] [--aronov-max N] [--sg2001-max N] [--time-limit S]\n"
+    "           [--spiderweb-time-limit S] [--memory-limit-mib M]\n"
+    "\n"
+    "Morphs a deterministic corpus of compatible stick-figure pairs and measures\n"
+    "each case in a child process of its own.\n"
+    "\n"
+    "  --sizes LIST             requested vertex counts (default 10,30,100,300,1000,3000,10000)\n"
+    "  --families LIST          polyline,spiral,polygon,tree,triangulation,thinned (default all)\n"
+    "  --frames N               frames per morph (default 50)\n"
+    "  --json FILE              write one JSON object per (case, method) to FILE\n"
+    "  --aronov-max N           run aronov only up to N requested vertices (default 300)\n"
+    "  --sg2001-max N           run sg2001 only up to N requested vertices (default 1000)\n"
+    "  --time-limit S           seconds of wall time for an improved case (default 150)\n"
+    "  --spiderweb-time-limit S seconds for an aronov or sg2001 case (default 60)\n"
+    "  --memory-limit-mib M     address-space limit of every child (default 4096)\n";
 
-// A gentle twist about the figure's centre: smooth, so a compatible target
-// when the figure's edges are short next to the twist's variation.
-std::vector<Vec2> twisted(const std::vector<Vec2>& p, double strength) {
-  double cx = 0, cy = 0, reach = 0;
-  for (const Vec2& q : p) cx += q[0] / p.size(), cy += q[1] / p.size();
-  for (const Vec2& q : p) reach = std::max(reach, std::hypot(q[0] - cx, q[1] - cy));
-  std::vector<Vec2> out;
-  for (const Vec2& q : p) {
-    const double dx = q[0] - cx, dy = q[1] - cy;
-    const double a = strength * std::hypot(dx, dy) / reach;
-    out.push_back({cx + std::cos(a) * dx - std::sin(a) * dy + 0.3 * reach,
-                   cy + std::sin(a) * dx + std::cos(a) * dy});
-  }
-  return out;
-}
-
-// A polyline winding as a sine wave.
-std::pair<StickFigure, StickFigure> polyline_case(int n) {
-  std::vector<Vec2> p;
-  std::vector<Edge> e;
-  for (int i = 0; i < n; ++i) {
-    p.push_back({double(i), 3 * std::sin(i * 0.3)});
-    if (i) e.push_back({i - 1, i});
-  }
-  std::vector<Vec2> q;
-  for (int i = 0; i < n; ++i) q.push_back({double(i) * 0.8, 4 * std::cos(i * 0.17) + 0.01 * i});
-  return {make(p, e), make(q, e)};
-}
-
-// A tree: a spine with alternating branches of two edges.
-std::pair<StickFigure, StickFigure> tree_case(int n) {
-  std::vector<Vec2> p;
-  std::vector<Edge> e;
-  const int spine = std::max(2, n / 3);
-  for (int i = 0; i < spine; ++i) {
-    p.push_back({double(i), 0});
-    if (i) e.push_back({i - 1, i});
-  }
-  for (int i = 0; int(p.size()) + 2 <= n && i < spine; ++i) {
-    const double side = i % 2 ? 1 : -1;
-    const int a = int(p.size());
-    p.push_back({i + 0.3, side * 1.0});
-    p.push_back({i + 0.1, side * 2.0});
-    e.push_back({i, a});
-    e.push_back({a, a + 1});
-  }
-  return {make(p, e), make(twisted(p, 0.8), e)};
-}
-
-// A k by k grid triangulation, interior sheared.
-std::pair<StickFigure, StickFigure> triangulation_case(int n) {
-  const int k = std::max(2, int(std::lround(std::sqrt(double(n)))));
-  std::vector<Vec2> p;
-  std::vector<Edge> e;
-  auto id = [k](int i, int j) { return i * k + j; };
-  for (int i = 0; i < k; ++i)
-    for (int j = 0; j < k; ++j) p.push_back({double(j), double(i)});
-  for (int i = 0; i < k; ++i)
-    for (int j = 0; j < k; ++j) {
-      if (j + 1 < k) e.push_back({id(i, j), id(i, j + 1)});
-      if (i + 1 < k) e.push_back({id(i, j), id(i + 1, j)});
-      if (i + 1 < k && j + 1 < k) e.push_back({id(i, j), id(i + 1, j + 1)});
-    }
-  return {make(p, e), make(twisted(p, 1.0), e)};
-}
-
-struct Row {
-  std::string kind;
-  int n = 0;
-  int steiner[3] = {-1, -1, -1};  // aronov, sg2001, improved
-  double triangulate_ms = 0;
-  double per_frame_ms = 0;   // weights, assembly and solve, per frame
-  double verify_frame_ms = 0;  // exact check, per frame
-  int factorizations = 0;
-  double fresh_lu_ms = 0;
-  long peak_kib = 0;
-  std::string note;
+struct Options {
+  std::vector<int> sizes = {10, 30, 100, 300, 1000, 3000, 10000};
+  std::vector<std::string> families = family_names();
+  int frames = 50;
+  std::string json_path;
+  int aronov_max = 300;
+  int sg2001_max = 1000;
+  int time_limit_s = 150;
+  int spiderweb_time_limit_s = 60;
+  long memory_limit_mib = 4096;
+  bool help = false;
 };
 
-// A fresh factorisation and solve of one frame's system, for comparison
-// with the morph's per-frame cost.
+int parse_int(const std::string& name, const std::string& text, int least) {
+  int value = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  if (text.empty() || error != std::errc() || stop != end || value < least)
+    throw InvalidArgumentError(name + " needs an integer of at least " + std::to_string(least) + ", got '" +
+                               text + "'");
+  return value;
+}
+
+std::vector<std::string> split(const std::string& text) {
+  std::vector<std::string> items;
+  std::stringstream list(text);
+  for (std::string item; std::getline(list, item, ',');) items.push_back(item);
+  return items;
+}
+
+Options parse_arguments(int argc, char** argv) {
+  Options options;
+  for (int i = 1; i < argc; ++i) {
+    const std::string name = argv[i];
+    if (name == "--help" || name == "-h") {
+      options.help = true;
+      continue;
+    }
+    if (i + 1 >= argc) throw InvalidArgumentError("unknown argument or missing value: '" + name + "' (see --help)");
+    const std::string value = argv[++i];
+    if (name == "--sizes") {
+      options.sizes.clear();
+      for (const std::string& item : split(value)) options.sizes.push_back(parse_int("--sizes", item, 3));
+      if (options.sizes.empty()) throw InvalidArgumentError("--sizes needs at least one size");
+    } else if (name == "--families") {
+      options.families = split(value);
+      for (const std::string& family : options.families)
+        if (std::find(family_names().begin(), family_names().end(), family) == family_names().end())
+          throw InvalidArgumentError("--families: unknown family '" + family + "'");
+    } else if (name == "--frames") {
+      options.frames = parse_int(name, value, 2);
+    } else if (name == "--json") {
+      options.json_path = value;
+    } else if (name == "--aronov-max") {
+      options.aronov_max = parse_int(name, value, 0);
+    } else if (name == "--sg2001-max") {
+      options.sg2001_max = parse_int(name, value, 0);
+    } else if (name == "--time-limit") {
+      options.time_limit_s = parse_int(name, value, 1);
+    } else if (name == "--spiderweb-time-limit") {
+      options.spiderweb_time_limit_s = parse_int(name, value, 1);
+    } else if (name == "--memory-limit-mib") {
+      options.memory_limit_mib = parse_int(name, value, 64);
+    } else {
+      throw InvalidArgumentError("unknown option '" + name + "' (see --help)");
+    }
+  }
+  return options;
+}
+
+// ---------------------------------------------------------------------------
+// A JSON object written field by field (one line, flat values).
+
+class Record {
+ public:
+  Record& set(const std::string& key, const std::string& value) { return raw(key, quote_json_string(value)); }
+  Record& set(const std::string& key, const char* value) { return set(key, std::string(value)); }
+  Record& set(const std::string& key, double value) {
+    return raw(key, std::isfinite(value) ? format_json_number(value) : std::string("null"));
+  }
+  Record& set(const std::string& key, int value) { return raw(key, std::to_string(value)); }
+  Record& set(const std::string& key, long value) { return raw(key, std::to_string(value)); }
+  Record& set(const std::string& key, bool value) { return raw(key, value ? "true" : "false"); }
+  /// A field whose value is already JSON text.
+  Record& raw(const std::string& key, const std::string& json) {
+    text_ += (text_.empty() ? "{" : ",") + quote_json_string(key) + ":" + json;
+    return *this;
+  }
+  std::string str() const { return (text_.empty() ? "{" : text_) + "}"; }
+
+ private:
+  std::string text_;
+};
+
+// ---------------------------------------------------------------------------
+// The measured work, run inside a child.
+
+/// A fresh factorisation and solve of one frame's system, for comparison
+/// with the morph's amortised per-frame cost.
 double fresh_lu_ms(const FigureTriangulation& tri) {
   const Eigen::SparseMatrix<double, Eigen::RowMajor> w = barycentric_weights(tri, tri.source, WeightKind::MeanValue);
   const int nodes = tri.node_count();
@@ -137,8 +188,12 @@ double fresh_lu_ms(const FigureTriangulation& tri) {
     triplets.emplace_back(interior_index[v], interior_index[v], 1.0);
     for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(w, v); it; ++it) {
       const int u = int(it.col());
-      if (interior_index[u] >= 0) triplets.emplace_back(interior_index[v], interior_index[u], -it.value());
-      else bx[interior_index[v]] += it.value() * tri.source[u][0], by[interior_index[v]] += it.value() * tri.source[u][1];
+      if (interior_index[u] >= 0) {
+        triplets.emplace_back(interior_index[v], interior_index[u], -it.value());
+      } else {
+        bx[interior_index[v]] += it.value() * tri.source[u][0];
+        by[interior_index[v]] += it.value() * tri.source[u][1];
+      }
     }
   }
   Eigen::SparseMatrix<double> a(interior, interior);
@@ -148,130 +203,279 @@ double fresh_lu_ms(const FigureTriangulation& tri) {
   lu.factorize(a);
   const Eigen::VectorXd x = lu.solve(bx), y = lu.solve(by);
   const double ms = ms_since(start);
-  if (!std::isfinite(x.sum() + y.sum())) return -1;
+  if (lu.info() != Eigen::Success || !std::isfinite(x.sum() + y.sum())) return -1;
   return ms;
 }
 
-Row run_case(const std::string& kind, int n, int frames) {
-  const auto [s, t] = kind == "polyline" ? polyline_case(n) : kind == "tree" ? tree_case(n) : triangulation_case(n);
-  Row row;
-  row.kind = kind;
-  row.n = int(s.vertices.size());
-  if (!check_compatibility(s, t).compatible()) {
-    row.note = "target not compatible";
-    return row;
-  }
-  // Steiner counts per method; the paper's spiderwebs grow as n^2 on long
-  // thin faces, so aronov is measured up to a thousand vertices and sg2001
-  // up to three thousand.
-  const SteinerMethod methods[3] = {SteinerMethod::Aronov, SteinerMethod::Sg2001, SteinerMethod::Improved};
-  FigureTriangulation improved;
-  for (int m = 0; m < 3; ++m) {
-    if ((m == 0 && row.n > 1000) || (m == 1 && row.n > 3000)) continue;
-    FigureTriangulationOptions options;
-    options.method = methods[m];
-    try {
-      const auto start = Clock::now();
-      FigureTriangulation tri = triangulate_figures(s, t, options);
-      if (m == 2) row.triangulate_ms = ms_since(start), improved = std::move(tri);
-      else row.steiner[m] = tri.steiner_vertices;
-    } catch (const std::exception& e) {
-      row.note += std::string(m == 0 ? "aronov" : m == 1 ? "sg2001" : "improved") + " failed: " + std::string(e.what()).substr(0, 60) + "; ";
-    }
-  }
-  if (improved.node_count() == 0) return row;
-  row.steiner[2] = improved.steiner_vertices;
-  MorphOptions options;
-  options.frames = frames;
-  try {
-    const MorphResult result = morph_triangulation(improved, s, options);
-    row.per_frame_ms = (result.stats.factorize_ms + result.stats.solve_ms) / frames;
-    row.verify_frame_ms = result.stats.verify_ms / frames;
-    row.factorizations = result.stats.factorizations;
-  } catch (const std::exception& e) {
-    row.note += std::string("morph failed: ") + std::string(e.what()).substr(0, 80);
-  }
-  row.fresh_lu_ms = fresh_lu_ms(improved);
-  return row;
+/// Generation and validation, shared by every method's child.
+struct Figures {
+  StickFigure source, target;
+  double twist = 0;
+  double generate_ms = 0;
+  double validate_ms = 0;  ///< make_stick_figure of both (exact planarity checks)
+};
+
+Figures make_figures(const std::string& family, int requested) {
+  Figures figures;
+  auto start = Clock::now();
+  RawPair raw = make_pair(family, requested);
+  figures.generate_ms = ms_since(start);
+  figures.twist = raw.twist;
+  start = Clock::now();
+  figures.source = make_stick_figure(raw.source, raw.edges);
+  figures.target = make_stick_figure(raw.target, raw.edges);
+  figures.validate_ms = ms_since(start);
+  return figures;
 }
 
-// Runs one case in a child process; returns its row text (one line).
-std::string run_isolated(const std::string& kind, int n, int frames) {
-  int pipe_fds[2];
-  if (pipe(pipe_fds) != 0) return "| " + kind + " | " + std::to_string(n) + " | pipe failed |";
+void add_triangulation_stats(Record& record, double total_ms, const FigureTriangulationStats& stats,
+                             const FigureTriangulation& tri) {
+  record.set("steiner", tri.steiner_vertices)
+      .set("triangles", int(tri.triangles.size()))
+      .set("interior_faces", stats.interior_faces)
+      .set("cut_bends", stats.cut_bends)
+      .set("interior_steiner", stats.interior_steiner)
+      .set("min_angle_deg", stats.min_angle * 180 / kPi)
+      .set("triangulate_ms", total_ms)
+      .set("decompose_ms", stats.decompose_ms)
+      .set("cut_ms", stats.cut_ms)
+      .set("interior_faces_ms", stats.interior_faces_ms)
+      .set("exterior_face_ms", stats.exterior_face_ms)
+      .set("verify_triangulation_ms", stats.verify_ms);
+}
+
+/// aronov or sg2001: the compatible triangulation alone.
+std::string run_spiderweb(const std::string& family, int requested, SteinerMethod method) {
+  Record record;
+  const Figures figures = make_figures(family, requested);
+  record.set("n", int(figures.source.vertices.size())).set("edges", int(figures.source.edges.size()));
+  FigureTriangulationOptions options;
+  options.method = method;
+  FigureTriangulationStats stats;
+  const auto start = Clock::now();
+  const FigureTriangulation tri = triangulate_figures(figures.source, figures.target, options, &stats);
+  add_triangulation_stats(record, ms_since(start), stats, tri);
+  return record.str();
+}
+
+/// improved: the whole pipeline, then our frames re-checked one by one and
+/// the straight-line morph's frames counted.
+std::string run_improved(const std::string& family, int requested, int frames) {
+  Record record;
+  const Figures figures = make_figures(family, requested);
+  const StickFigure& source = figures.source;
+  const int n = int(source.vertices.size());
+  record.set("n", n).set("edges", int(source.edges.size())).set("twist", figures.twist);
+  record.set("generate_ms", figures.generate_ms).set("validate_ms", figures.validate_ms);
+
+  FigureTriangulationStats stats;
+  auto start = Clock::now();
+  const FigureTriangulation tri = triangulate_figures(source, figures.target, {}, &stats);
+  add_triangulation_stats(record, ms_since(start), stats, tri);
+
+  MorphOptions options;
+  options.frames = frames;
+  start = Clock::now();
+  const MorphResult morph = morph_triangulation(tri, source, options);
+  record.set("morph_ms", ms_since(start))
+      .set("frames", frames)
+      .set("morph_setup_ms", morph.stats.factorize_ms)
+      .set("solve_ms", morph.stats.solve_ms)
+      .set("verify_frames_ms", morph.stats.verify_ms)
+      .set("factorizations", morph.stats.factorizations)
+      .set("refined_frames", morph.stats.refined_frames);
+
+  // The morph refuses a frame that fails its exact check, so a result means
+  // every frame passed; count again with the public check, independently of
+  // the morph's own bookkeeping.
+  const Decomposition decomposition = decompose(source);
+  int invalid = 0;
+  for (const std::vector<Vec2>& frame : morph.frames) {
+    const std::vector<Vec2> figure(frame.begin(), frame.begin() + n);
+    if (!is_frame_valid(source, decomposition, figure)) ++invalid;
+  }
+  record.set("invalid_frames", invalid);
+
+  std::vector<int> linear_invalid;
+  linear_morph(source, figures.target, frames, &linear_invalid);
+  record.set("linear_invalid_frames", int(linear_invalid.size()));
+  record.set("linear_first_invalid", linear_invalid.empty() ? -1 : linear_invalid.front());
+  record.set("fresh_lu_ms", fresh_lu_ms(tri));
+  return record.str();
+}
+
+// ---------------------------------------------------------------------------
+// Children
+
+struct ChildResult {
+  std::string status;  ///< ok, failed, timeout, out_of_memory, crashed
+  std::string body;    ///< the child's JSON fields (ok) or message
+  double wall_ms = 0;
+  long peak_kib = 0;
+};
+
+/// Runs `work` in a child with an address-space limit and an alarm; the child
+/// writes "ok <json>" or "failed <message>" to a pipe.
+ChildResult run_child(const std::function<std::string()>& work, int seconds, long memory_mib) {
+  ChildResult result;
+  int fds[2];
+  if (pipe(fds) != 0) throw Error(std::string("pipe: ") + std::strerror(errno));
+  std::cout.flush();
+  std::cerr.flush();
+  const auto start = Clock::now();
   const pid_t child = fork();
+  if (child < 0) throw Error(std::string("fork: ") + std::strerror(errno));
   if (child == 0) {
-    close(pipe_fds[0]);
-    const Row r = run_case(kind, n, frames);
-    struct rusage usage {};
-    getrusage(RUSAGE_SELF, &usage);
-    auto cell = [](int v) { return v < 0 ? std::string("-") : std::to_string(v); };
-    char buffer[640];
-    std::snprintf(buffer, sizeof buffer,
-                  "| %s | %d | %s | %s | %s | %.2f | %.1f | %.3f | %.3f | %.1f | %.3f | %d | %ld | %s |\n",
-                  r.kind.c_str(), r.n, cell(r.steiner[0]).c_str(), cell(r.steiner[1]).c_str(),
-                  cell(r.steiner[2]).c_str(), r.n ? double(std::max(0, r.steiner[2])) / r.n : 0.0, r.triangulate_ms,
-                  r.per_frame_ms, r.fresh_lu_ms, r.fresh_lu_ms > 0 && r.per_frame_ms > 0 ? r.fresh_lu_ms / r.per_frame_ms : 0.0,
-                  r.verify_frame_ms, r.factorizations, long(usage.ru_maxrss) / 1024, r.note.c_str());
-    const ssize_t written = write(pipe_fds[1], buffer, std::strlen(buffer));
-    (void)written;
-    close(pipe_fds[1]);
+    close(fds[0]);
+    struct rlimit limit {};
+    limit.rlim_cur = limit.rlim_max = rlim_t(memory_mib) * 1024 * 1024;
+    setrlimit(RLIMIT_AS, &limit);
+    alarm(unsigned(seconds));  // SIGALRM's default action ends the child
+    std::string message;
+    try {
+      message = "ok " + work();
+    } catch (const std::bad_alloc&) {
+      message = "out_of_memory more than the " + std::to_string(memory_mib) + " MiB address-space limit";
+    } catch (const std::exception& error) {
+      message = std::string("failed ") + error.what();
+    }
+    for (char& c : message)
+      if (c == '\n') c = ' ';
+    std::size_t sent = 0;
+    while (sent < message.size()) {
+      const ssize_t wrote = write(fds[1], message.data() + sent, message.size() - sent);
+      if (wrote <= 0) break;
+      sent += std::size_t(wrote);
+    }
+    close(fds[1]);
     _exit(0);
   }
-  close(pipe_fds[1]);
+  close(fds[1]);
   std::string text;
-  char chunk[512];
+  char chunk[4096];
   ssize_t got;
-  while ((got = read(pipe_fds[0], chunk, sizeof chunk)) > 0) text.append(chunk, std::size_t(got));
-  close(pipe_fds[0]);
+  while ((got = read(fds[0], chunk, sizeof chunk)) > 0) text.append(chunk, std::size_t(got));
+  close(fds[0]);
   int status = 0;
-  waitpid(child, &status, 0);
-  if (text.empty()) text = "| " + kind + " | " + std::to_string(n) + " | crashed (status " + std::to_string(status) + ") |\n";
-  return text;
+  struct rusage usage {};
+  wait4(child, &status, 0, &usage);
+  result.wall_ms = ms_since(start);
+  result.peak_kib = long(usage.ru_maxrss);  // kilobytes on Linux
+  const std::size_t space = text.find(' ');
+  if (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM) {
+    result.status = "timeout";
+    result.body = "stopped after the " + std::to_string(seconds) + " s limit";
+  } else if (WIFSIGNALED(status) || space == std::string::npos) {
+    result.status = "crashed";
+    result.body = WIFSIGNALED(status) ? "signal " + std::to_string(WTERMSIG(status))
+                                      : "exit status " + std::to_string(WEXITSTATUS(status));
+  } else {
+    result.status = text.substr(0, space);
+    result.body = text.substr(space + 1);
+  }
+  return result;
+}
+
+const char* method_key(SteinerMethod method) {
+  return method == SteinerMethod::Aronov ? "aronov" : method == SteinerMethod::Sg2001 ? "sg2001" : "improved";
+}
+
+std::string cell(const ChildResult& r, const std::string& key) {
+  if (r.status != "ok") return r.status;
+  try {
+    const JsonValue value = parse_json(r.body);
+    if (const JsonValue* item = value.find(key)) return to_json(*item);
+  } catch (const JsonError&) {
+    // The child's text is this program's own output; unreadable text would
+    // be a bug here, shown in the table rather than hidden.
+    return "unreadable";
+  }
+  return "-";
+}
+
+int run(int argc, char** argv) {
+  const Options options = parse_arguments(argc, argv);
+  if (options.help) {
+    std::cout << kUsage;
+    return 0;
+  }
+  std::ofstream json;
+  if (!options.json_path.empty()) {
+    json.open(options.json_path);
+    if (!json) throw Error("cannot write '" + options.json_path + "'");
+  }
+  std::cout << "# Morph benchmark\n\n" << options.frames << " frames per morph.\n\n"
+            << "| family | requested n | method | status | n | Steiner | triangulate ms | morph ms | peak MiB | "
+               "linear invalid frames |\n|---|--:|---|---|--:|--:|--:|--:|--:|--:|\n";
+  const SteinerMethod methods[3] = {SteinerMethod::Improved, SteinerMethod::Sg2001, SteinerMethod::Aronov};
+  const int total = int(options.families.size() * options.sizes.size());
+  int done = 0;
+  const auto run_start = Clock::now();
+  for (const std::string& family : options.families) {
+    // Why a method is no longer run in this family, once it has hit the time
+    // or memory limit: larger cases would only hit it again.
+    std::map<SteinerMethod, std::string> stopped;
+    for (int requested : options.sizes) {
+      ++done;
+      for (SteinerMethod method : methods) {
+        const std::string name = method_key(method);
+        Record record;
+        record.set("family", family).set("requested_n", requested).set("method", name);
+        std::string not_run;
+        const int cap = method == SteinerMethod::Aronov ? options.aronov_max
+                        : method == SteinerMethod::Sg2001 ? options.sg2001_max
+                                                          : -1;
+        if (stopped.count(method)) {
+          not_run = stopped[method];
+        } else if (cap >= 0 && requested > cap) {
+          not_run = "above the size cap of " + std::to_string(cap) +
+                    " vertices: its spiderweb grows quadratically on long thin faces";
+        }
+        std::cerr << "[" << done << "/" << total << ", " << int(ms_since(run_start) / 1000) << " s] " << family
+                  << " n~" << requested << " " << name << ": " << std::flush;
+        if (!not_run.empty()) {
+          record.set("status", "not_run").set("reason", not_run);
+          std::cerr << "not run (" << not_run << ")\n";
+        } else {
+          const bool improved = method == SteinerMethod::Improved;
+          const ChildResult r = run_child(
+              [&] { return improved ? run_improved(family, requested, options.frames)
+                                    : run_spiderweb(family, requested, method); },
+              improved ? options.time_limit_s : options.spiderweb_time_limit_s, options.memory_limit_mib);
+          record.set("status", r.status).set("wall_ms", r.wall_ms).set("peak_kib", r.peak_kib);
+          if (r.status == "ok") {
+            record.raw("result", r.body);
+          } else {
+            record.set("reason", r.body);
+            if (r.status == "timeout" || r.status == "out_of_memory")
+              stopped[method] = "not run past n~" + std::to_string(requested) + ", where it was " +
+                                (r.status == "timeout" ? "stopped at the time limit" : "out of memory");
+          }
+          std::cerr << r.status << " in " << int(r.wall_ms) << " ms, peak " << r.peak_kib / 1024 << " MiB"
+                    << (r.status == "ok" ? "" : ": " + r.body) << "\n";
+          std::cout << "| " << family << " | " << requested << " | " << name << " | " << r.status << " | "
+                    << cell(r, "n") << " | " << cell(r, "steiner") << " | " << cell(r, "triangulate_ms") << " | "
+                    << cell(r, "morph_ms") << " | " << r.peak_kib / 1024 << " | "
+                    << cell(r, "linear_invalid_frames") << " |\n"
+                    << std::flush;
+        }
+        if (json) json << record.str() << "\n" << std::flush;
+      }
+    }
+  }
+  std::cerr << "done in " << int(ms_since(run_start) / 1000) << " s\n";
+  if (json && !json.good()) throw Error("writing '" + options.json_path + "' failed");
+  return 0;
 }
 
 }  // namespace
-}  // namespace stickmorph
+}  // namespace stickmorph::bench
 
 int main(int argc, char** argv) {
-  std::vector<int> sizes = {10, 100, 1000, 10000};
-  int frames = 100;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if ((arg == "--sizes" || arg == "--frames") && i + 1 < argc) {
-      const std::string value = argv[++i];
-      if (arg == "--frames") {
-        frames = std::atoi(value.c_str());
-      } else {
-        sizes.clear();
-        std::stringstream list(value);
-        for (std::string item; std::getline(list, item, ',');) sizes.push_back(std::atoi(item.c_str()));
-      }
-    } else if (arg == "--help" || arg == "-h") {
-      std::printf("usage: stickmorph_benchmark_morph [--sizes 10,100,1000,10000] [--frames N]\n");
-      return 0;
-    } else {
-      std::fprintf(stderr, "error: unknown argument '%s'\n", arg.c_str());
-      return 2;
-    }
-  }
-  if (frames < 2 || sizes.empty()) {
-    std::fprintf(stderr, "error: --frames must be at least 2 and --sizes non-empty\n");
+  try {
+    return stickmorph::bench::run(argc, argv);
+  } catch (const std::exception& error) {
+    std::cerr << "error: " << error.what() << "\n";
     return 2;
   }
-  std::printf("# Morph benchmark\n\n%d frames per morph; Steiner counts per method (aronov up to 1000 "
-              "vertices, sg2001 up to 3000); solve ms per frame = weights, assembly, factorizations and the anchored "
-              "iterative solves, amortised over the frames, "
-              "against a fresh sparse LU (assemble, analyse, factorise, solve) of one frame's system; the exact "
-              "check of each frame is listed apart; peak resident memory of the case's process.\n\n",
-              frames);
-  std::printf("| figure | n | aronov | sg2001 | improved | improved / n | triangulate ms | solve ms per frame | "
-              "fresh LU ms | fresh LU / solve | verify ms per frame | factorizations | peak MiB | note |\n"
-              "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|---|\n");
-  for (const char* kind : {"polyline", "tree", "triangulation"})
-    for (int n : sizes) {
-      std::printf("%s", stickmorph::run_isolated(kind, n, frames).c_str());
-      std::fflush(stdout);
-    }
-  return 0;
 }

@@ -14,13 +14,15 @@
 // whatever the methods did. Only bad arguments exit with 2.
 //
 // Usage: stickmorph_benchmark [--methods aronov,sg2001,improved] [--repeat N]
-//                             FILE_OR_DIR...
+//                             [--json FILE] FILE_OR_DIR...
+// --json also writes every pair's results as JSON, for make_benchmarks.py.
 #include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <limits>
 #include <sstream>
@@ -34,6 +36,7 @@
 #include "stickmorph/decomposition.h"
 #include "stickmorph/errors.h"
 #include "stickmorph/figure_io.h"
+#include "stickmorph/json.h"
 #include "stickmorph/stick_figure.h"
 
 namespace stickmorph {
@@ -61,7 +64,7 @@ constexpr int kPaperImproved = 153;
 
 constexpr const char* kUsage =
     "usage: stickmorph_benchmark [--methods aronov,sg2001,improved] [--repeat N] "
-    "[FILE_OR_DIR...]\n"
+    "[--json FILE] [FILE_OR_DIR...]\n"
     "\n"
     "Compatibly triangulates polygon pairs with each method and prints a Markdown\n"
     "table of Steiner vertices, Steiner/corner ratio, smallest angle and time.\n"
@@ -70,11 +73,13 @@ constexpr const char* kUsage =
     "arguments, reads tests/data/polygon_pairs.\n"
     "\n"
     "  --methods LIST  comma-separated methods (default aronov,sg2001,improved)\n"
-    "  --repeat N      time each method N times and keep the best (default 3)\n";
+    "  --repeat N      time each method N times and keep the best (default 3)\n"
+    "  --json FILE     also write the results as JSON to FILE\n";
 
 struct Options {
   std::vector<SteinerMethod> methods;
   int repeat = 3;
+  std::string json_path;
   std::vector<std::string> inputs;
   bool help = false;
 };
@@ -170,7 +175,7 @@ Options parse_arguments(int argc, char** argv) {
       value = argument.substr(equals + 1);
       has_value = true;
     }
-    if (name != "--methods" && name != "--repeat") {
+    if (name != "--methods" && name != "--repeat" && name != "--json") {
       throw InvalidArgumentError("unknown option '" + name + "' (see --help)");
     }
     if (!has_value) {
@@ -179,6 +184,8 @@ Options parse_arguments(int argc, char** argv) {
     }
     if (name == "--methods") {
       options.methods = parse_methods(value);
+    } else if (name == "--json") {
+      options.json_path = value;
     } else {
       options.repeat = parse_repeat(value);
     }
@@ -497,6 +504,36 @@ void print_summary(std::ostream& out, const Options& options,
   }
 }
 
+/// The results as one JSON document: {"repeat": N, "pairs": [{"name", "corners",
+/// "skipped", "methods": [{"method", "ok", "failure", "steiner", "ms",
+/// "min_angle_before_deg", "min_angle_after_deg"}]}]}.
+void write_json(const std::string& path, const Options& options, const std::vector<CaseResult>& results) {
+  std::ofstream out(path);
+  if (!out) throw Error("cannot write '" + path + "'");
+  out << "{\"repeat\":" << options.repeat << ",\"pairs\":[";
+  for (std::size_t c = 0; c < results.size(); ++c) {
+    const CaseResult& result = results[c];
+    out << (c ? "," : "") << "\n{\"name\":" << quote_json_string(result.name) << ",\"corners\":" << result.corners
+        << ",\"skipped\":" << quote_json_string(result.skipped) << ",\"methods\":[";
+    for (std::size_t m = 0; m < result.methods.size(); ++m) {
+      const MethodResult& method = result.methods[m];
+      out << (m ? "," : "") << "{\"method\":" << quote_json_string(steiner_method_name(options.methods[m]))
+          << ",\"ok\":" << (method.succeeded ? "true" : "false")
+          << ",\"failure\":" << quote_json_string(method.failure) << ",\"steiner\":" << method.steiner;
+      if (method.succeeded) {
+        out << ",\"ms\":" << format_json_number(method.best_milliseconds)
+            << ",\"min_angle_before_deg\":" << format_json_number(method.min_angle_before_degrees)
+            << ",\"min_angle_after_deg\":" << format_json_number(method.min_angle_after_degrees);
+      }
+      out << "}";
+    }
+    out << "]}";
+  }
+  out << "\n]}\n";
+  out.flush();
+  if (!out) throw Error("writing '" + path + "' failed");
+}
+
 int run(int argc, char** argv) {
   const Options options = parse_arguments(argc, argv);
   if (options.help) {
@@ -521,6 +558,7 @@ int run(int argc, char** argv) {
   print_summary(report, options, results);
   std::cout << report.str();
   std::cout.flush();
+  if (!options.json_path.empty()) write_json(options.json_path, options, results);
   if (!std::cout) throw Error("cannot write to standard output");
   return kExitSuccess;
 }

@@ -6,6 +6,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -295,23 +296,33 @@ Cut choose_cut(const StickFigure& source, const Decomposition& source_dec, const
 
 std::string face_label(int face) { return "face " + std::to_string(face); }
 
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
 }  // namespace
 
 FigureTriangulation triangulate_figures(const StickFigure& source, const StickFigure& target,
                                         const FigureTriangulationOptions& options, FigureTriangulationStats* stats) {
   if (options.enclosure_sides < 3)
     throw InvalidArgumentError("the enclosure needs at least 3 sides, got " + std::to_string(options.enclosure_sides));
+  FigureTriangulationStats measured;
+  auto stage_start = Clock::now();
   // Algorithm 3, step 1.
   const Decomposition source_dec = decompose(source);
   const Decomposition target_dec = decompose(target);
   const CompatibilityReport report = check_compatibility(source, source_dec, target, target_dec);
   if (!report.compatible()) throw IncompatibleFiguresError("incompatible figures: " + report.reason);
+  measured.decompose_ms = ms_since(stage_start);
+  stage_start = Clock::now();
 
   const int n = int(source.vertices.size());
   const int k = options.enclosure_sides;
   const std::vector<Vec2> enclosure = enclosure_polygon(source, target, k);
   const Cut cut = choose_cut(source, source_dec, target, target_dec, enclosure);
   const int bends = int(cut.source_bends.size());
+  measured.cut_ms = ms_since(stage_start);
 
   FigureTriangulation result;
   result.figure_vertices = n;
@@ -348,6 +359,7 @@ FigureTriangulation triangulate_figures(const StickFigure& source, const StickFi
 
   // Step 2: every interior face. Algorithm 1 lists each face's corners with
   // the face on the left, counter-clockwise, as section 4 expects.
+  stage_start = Clock::now();
   int face = 0, interior = 0;
   for (const CyclicSequence& seq : source_dec.sequences) {
     ++face;
@@ -360,6 +372,8 @@ FigureTriangulation triangulate_figures(const StickFigure& source, const StickFi
     glue(pair, face_label(face - 1));
   }
   const int interior_steiner = int(result.source.size()) - n - k - bends;
+  measured.interior_faces_ms = ms_since(stage_start);
+  stage_start = Clock::now();
 
   // Step 3: the exterior, cut open into one weakly simple polygon:
   // the exterior walk from the cut corner round to itself, out along the
@@ -384,10 +398,15 @@ FigureTriangulation triangulate_figures(const StickFigure& source, const StickFi
                    std::to_string(ext.vertices[c]) + ")");
   }
 
+  measured.exterior_face_ms = ms_since(stage_start);
+
   // Steiner vertices follow the figure and the enclosure.
   result.steiner_vertices = int(result.source.size()) - n - k;
+  stage_start = Clock::now();
   verify_figure_triangulation(result, source);
+  measured.verify_ms = ms_since(stage_start);
   if (stats) {
+    *stats = measured;
     stats->interior_faces = interior;
     stats->cut_bends = bends;
     stats->interior_steiner = interior_steiner;

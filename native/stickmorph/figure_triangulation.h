@@ -42,6 +42,13 @@ struct FigureTriangulationStats {
   int cut_bends = 0;           ///< Steiner vertices on the annulus cut
   int interior_steiner = 0;    ///< Steiner vertices inside interior faces
   double min_angle = 0;        ///< radians, over both embeddings
+  // Wall-clock milliseconds per stage, for benchmarks (BENCHMARKS.md): they
+  // add up to nearly the whole call, so a slow case shows where it goes.
+  double decompose_ms = 0;         ///< Algorithm 1 on both figures and the compatibility check
+  double cut_ms = 0;               ///< enclosure and annulus cut (step 3)
+  double interior_faces_ms = 0;    ///< section 4 on every interior face (step 2)
+  double exterior_face_ms = 0;     ///< section 4 on the cut-open exterior (step 3)
+  double verify_ms = 0;            ///< verify_figure_triangulation of the glued result
 };
 
 /// Algorithm 3, steps 1-3, for two compatible figures (vertex i of the
