@@ -1,0 +1,115 @@
+#!/usr/bin/env bash
+# Regenerates BENCHMARKS.md and its plots (docs/benchmarks/*.svg) in one run.
+#
+#   bash scripts/benchmarks.sh [--quick] [--working-tree]
+#
+# Measures exactly the committed HEAD: a detached git worktree of it in
+# build-bench/source (git rewrites only the files that changed, so rebuilds
+# stay incremental), built in Release in build-bench/release. Uncommitted
+# edits in the working tree, which other people may be in the middle of, are
+# not measured, so the commit that BENCHMARKS.md names is the code measured.
+# --working-tree measures the working tree instead (build-bench/working-tree),
+# and the report then says that the commit had uncommitted changes.
+#
+# Runs the benchmark programs with machine-readable output into
+# out/benchmarks/ (gitignored):
+#   polygon_pairs.json  stickmorph_benchmark on tests/data/polygon_pairs
+#   morph.jsonl         stickmorph_benchmark_morph on the generated corpus
+#   run.json            machine, date, commit, command, runtime
+# and then scripts/make_benchmarks.py (Debian's /usr/bin/python3, standard
+# library only) writes BENCHMARKS.md and the SVG plots from those files.
+# --quick runs sizes 10 to 300 only, to try the pipeline in a minute; the
+# report gives the command it was made with.
+set -euo pipefail
+
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+start=$(date +%s)
+command="bash scripts/benchmarks.sh"
+sizes=10,30,100,300,1000,3000,10000
+working_tree=0
+for argument in "$@"; do
+  case "$argument" in
+    --quick) sizes=10,30,100,300 ;;
+    --working-tree) working_tree=1 ;;
+    *) echo "usage: bash scripts/benchmarks.sh [--quick] [--working-tree]" >&2; exit 2 ;;
+  esac
+  command+=" $argument"
+done
+frames=50
+aronov_max=300
+sg2001_max=1000
+memory_limit_mib=4096
+data=out/benchmarks
+commit=$(git rev-parse --short=12 HEAD)
+
+bash scripts/install_deps.sh
+
+if [[ $working_tree -eq 1 ]]; then
+  source_dir=.
+  build=build-bench/working-tree
+  if [[ -n "$(git status --porcelain --untracked-files=no)" ]]; then
+    commit+=" with uncommitted changes"
+  fi
+else
+  source_dir=build-bench/source
+  build=build-bench/release
+  head=$(git rev-parse HEAD)
+  if [[ ! -e "$source_dir/.git" ]]; then
+    mkdir -p build-bench
+    git worktree add --quiet --detach "$source_dir" "$head"
+  else
+    git -C "$source_dir" checkout --quiet --detach "$head"
+  fi
+fi
+
+echo "==== build ($build from $source_dir at $commit, Release) ===="
+if [[ ! -f "$build/CMakeCache.txt" ]]; then
+  cmake -S "$source_dir" -B "$build" -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 \
+    -DSTICKMORPH_BUILD_PYTHON=OFF -DSTICKMORPH_BUILD_TESTS=OFF
+fi
+build_type=$(sed -n 's/^CMAKE_BUILD_TYPE:STRING=//p' "$build/CMakeCache.txt")
+if [[ "$build_type" != "Release" ]]; then
+  echo "error: $build is configured as '$build_type', not Release; remove it or reconfigure" >&2
+  exit 2
+fi
+cmake --build "$build" -j2 --target stickmorph_benchmark stickmorph_benchmark_morph
+
+mkdir -p "$data"
+rm -f "$data/polygon_pairs.json" "$data/morph.jsonl" "$data/run.json"
+
+echo "==== polygon-pair corpus (tests/data/polygon_pairs) ===="
+"$build/stickmorph_benchmark" --json "$data/polygon_pairs.json" "$source_dir/tests/data/polygon_pairs" \
+  > "$data/polygon_pairs.md"
+
+echo "==== morph corpus (sizes $sizes, $frames frames; progress below) ===="
+"$build/stickmorph_benchmark_morph" --sizes "$sizes" --frames "$frames" --aronov-max "$aronov_max" \
+  --sg2001-max "$sg2001_max" --memory-limit-mib "$memory_limit_mib" --json "$data/morph.jsonl" \
+  > "$data/morph.md"
+
+runtime=$(( $(date +%s) - start ))
+cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)
+memory=$(awk '/^MemTotal/ {printf "%.0f GiB", $2 / 1048576}' /proc/meminfo)
+os=$(. /etc/os-release && echo "$PRETTY_NAME")
+compiler=$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")
+compiler_version=$("${compiler:-c++}" --version | head -1)
+flags=$(sed -n 's/^CMAKE_CXX_FLAGS_RELEASE:STRING=//p' "$build/CMakeCache.txt")
+
+# Passed through the environment, not spliced into Python source, so that no
+# character in a CPU name or path can break the JSON.
+BENCH_COMMAND="$command" BENCH_DATE="$(date -u '+%Y-%m-%d %H:%M UTC')" BENCH_COMMIT="$commit" \
+BENCH_MACHINE="$cpu, $(nproc) cores, $memory, $os" BENCH_COMPILER="$compiler_version" \
+BENCH_BUILD="CMake Release ($flags), $build/" BENCH_FRAMES="$frames" BENCH_ARONOV_MAX="$aronov_max" \
+BENCH_SG2001_MAX="$sg2001_max" BENCH_MEMORY_LIMIT_MIB="$memory_limit_mib" BENCH_RUNTIME_S="$runtime" \
+  /usr/bin/python3 -c '
+import json, os, sys
+e = os.environ
+json.dump({"command": e["BENCH_COMMAND"], "date": e["BENCH_DATE"], "commit": e["BENCH_COMMIT"],
+           "machine": e["BENCH_MACHINE"], "compiler": e["BENCH_COMPILER"], "build": e["BENCH_BUILD"],
+           "frames": int(e["BENCH_FRAMES"]), "aronov_max": int(e["BENCH_ARONOV_MAX"]),
+           "sg2001_max": int(e["BENCH_SG2001_MAX"]), "memory_limit_mib": int(e["BENCH_MEMORY_LIMIT_MIB"]),
+           "runtime_s": int(e["BENCH_RUNTIME_S"])}, open(sys.argv[1], "w"), indent=1)
+' "$data/run.json"
+
+echo "==== report ===="
+/usr/bin/python3 scripts/make_benchmarks.py --data "$data" --output BENCHMARKS.md --plots docs/benchmarks
+echo "benchmarks: done in $(( $(date +%s) - start )) s"
