@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "stickmorph/exact_predicates.h"
@@ -388,6 +389,105 @@ double option_quality(const std::vector<Vec2>& ps, const std::vector<Vec2>& pt, 
   return q;
 }
 
+// Kernel of a star: where node `v` may sit so that every triangle of its
+// star stays positive, the intersection of the half-planes left of each
+// opposite edge. Clipped to the link's bounding box (an interior node's
+// closed link bounds it anyway). Computed relative to `origin`, since far
+// from the origin the absolute coordinates would swallow a thin kernel.
+// Returns the kernel's vertex centroid relative to `origin`, or nothing if
+// the kernel is empty in floating point.
+std::optional<Vec2> star_kernel_middle(const std::vector<Vec2>& pos, const std::vector<Triangle>& star, int v,
+                                       const Vec2& origin) {
+  auto local = [&](int node) { return Vec2{pos[node][0] - origin[0], pos[node][1] - origin[1]}; };
+  double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  double hi[2] = {-lo[0], -lo[1]};
+  for (const Triangle& t : star)
+    for (int node : t)
+      if (node != v)
+        for (int c = 0; c < 2; ++c) lo[c] = std::min(lo[c], local(node)[c]), hi[c] = std::max(hi[c], local(node)[c]);
+  std::vector<Vec2> kernel = {{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}};
+  for (const Triangle& t : star) {
+    int j = 0;
+    while (t[j] != v) ++j;
+    const Vec2 a = local(t[(j + 1) % 3]), b = local(t[(j + 2) % 3]);
+    auto side = [&](const Vec2& p) { return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]); };
+    std::vector<Vec2> clipped;
+    for (std::size_t i = 0; i < kernel.size(); ++i) {
+      const Vec2 p = kernel[i], q = kernel[(i + 1) % kernel.size()];
+      const double sp = side(p), sq = side(q);
+      if (sp > 0) clipped.push_back(p);
+      if ((sp > 0) != (sq > 0) && sp != sq) {
+        const double u = sp / (sp - sq);
+        clipped.push_back({p[0] + u * (q[0] - p[0]), p[1] + u * (q[1] - p[1])});
+      }
+    }
+    kernel = std::move(clipped);
+    if (kernel.size() < 3) return std::nullopt;
+  }
+  Vec2 middle{0, 0};
+  for (const Vec2& p : kernel) middle = {middle[0] + p[0], middle[1] + p[1]};
+  return Vec2{middle[0] / double(kernel.size()), middle[1] / double(kernel.size())};
+}
+
+// Rounding repair. The spiderweb is an embedding in exact arithmetic
+// (section 4.1), but its Steiner vertices are rounded: a path crossing placed
+// a small fraction along a diagonal of a sliver face (a vertex very close to
+// a non-incident edge), or a central vertex in a sliver center face, can
+// land on the wrong side of a nearly collinear edge. Moving such a vertex to
+// the middle of its star's kernel fixes its inverted triangles without
+// touching any other triangle, so each accepted move strictly reduces the
+// number of inverted triangles. Where the kernel is only a few units in the
+// last place wide, the representable points next to its middle are tried
+// too. A move is kept only if the exact predicates accept its whole star.
+// Returns true if every triangle is positive afterwards.
+bool untangle(std::vector<Vec2>& pos, const std::vector<Triangle>& triangles, int corners) {
+  std::vector<std::vector<int>> star_of(pos.size());
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+    for (int node : triangles[i]) star_of[node].push_back(int(i));
+  auto is_positive = [&](const Triangle& t) { return orientation(pos[t[0]], pos[t[1]], pos[t[2]]) > 0; };
+  auto step = [](double x, int ulps) {
+    for (; ulps > 0; --ulps) x = std::nextafter(x, std::numeric_limits<double>::infinity());
+    for (; ulps < 0; ++ulps) x = std::nextafter(x, -std::numeric_limits<double>::infinity());
+    return x;
+  };
+  auto try_move = [&](int v) {
+    std::vector<Triangle> star;
+    for (int i : star_of[v]) star.push_back(triangles[i]);
+    const Vec2 origin = pos[v];
+    const std::optional<Vec2> middle = star_kernel_middle(pos, star, v, origin);
+    if (!middle) return false;
+    const Vec2 centre{origin[0] + (*middle)[0], origin[1] + (*middle)[1]};
+    for (int radius = 0; radius <= 3; ++radius)
+      for (int dx = -radius; dx <= radius; ++dx)
+        for (int dy = -radius; dy <= radius; ++dy) {
+          if (std::max(std::abs(dx), std::abs(dy)) != radius) continue;
+          pos[v] = {step(centre[0], dx), step(centre[1], dy)};
+          bool ok = true;
+          for (const Triangle& t : star) ok = ok && is_positive(t);
+          if (ok) return true;
+        }
+    pos[v] = origin;
+    return false;
+  };
+  for (int pass = 0; pass < 8; ++pass) {
+    bool moved = false, all_positive = true;
+    for (const Triangle& bad : triangles) {
+      if (is_positive(bad)) continue;
+      all_positive = false;
+      for (int v : bad)
+        if (v >= corners && try_move(v)) {  // polygon corners are fixed
+          moved = true;
+          break;
+        }
+    }
+    if (all_positive) return true;
+    if (!moved) return false;
+  }
+  for (const Triangle& t : triangles)
+    if (!is_positive(t)) return false;
+  return true;
+}
+
 // Identity of a node once corners are merged with their vertex.
 long node_key(const PolygonPair& pair, int corners, int node) {
   return node < corners ? pair.corners[node] : -1 - long(node);
@@ -433,17 +533,6 @@ Placement embed_in_both(const PolygonPair& pair, const std::array<PolygonTriangu
   Placement best;
   for (int attempt = 0; attempt < 80; ++attempt) {
     const Embedding e[2] = {embedder[0].place(scale[0]), embedder[1].place(scale[1])};
-    std::vector<char> shrink[2] = {std::vector<char>(web.corners, 0), std::vector<char>(web.corners, 0)};
-    bool any_bad = false;
-    auto blame = [&](const std::vector<int>& nodes, int s) {
-      any_bad = true;
-      for (int v : nodes) {
-        const int k = embedder[s].cluster_of(v);
-        if (k >= 0) shrink[s][k] = 1;
-      }
-    };
-    std::vector<Triangle> triangles;
-    std::string failure;
     auto node_text = [&](int v) {
       if (v < web.corners) return "corner " + std::to_string(v);
       if (v == web.center) return std::string("the central vertex");
@@ -452,16 +541,10 @@ Placement embed_in_both(const PolygonPair& pair, const std::array<PolygonTriangu
           if (web.path[k][l] == v) return "level " + std::to_string(l) + " of corner " + std::to_string(k) + "'s path";
       return std::to_string(v);
     };
-    for (const Triangle& t : web.fixed) {
-      triangles.push_back(t);
-      for (int s = 0; s < 2; ++s)
-        if (!positive(e[s].position, t)) {
-          if (failure.empty())
-            failure = "triangle (" + node_text(t[0]) + ", " + node_text(t[1]) + ", " + node_text(t[2]) +
-                      ") is inverted in the " + (s ? "target" : "source");
-          blame({t[0], t[1], t[2]}, s);
-        }
-    }
+    // Each cell takes the split that is positive in both polygons with the
+    // larger smallest angle, never doubling an edge; a cell with neither is
+    // split by its first diagonal and left to the repair below.
+    std::vector<Triangle> triangles = web.fixed;
     std::set<std::pair<long, long>> used = fixed_edges;
     for (const auto& q : web.quads) {
       int chosen = -1;
@@ -475,22 +558,35 @@ Placement embed_in_both(const PolygonPair& pair, const std::array<PolygonTriangu
         const double qv = option_quality(e[0].position, e[1].position, opt);
         if (qv > quality) quality = qv, chosen = o;
       }
-      if (chosen < 0) {
-        const std::vector<int> nodes = {q.option[0][0][0], q.option[0][0][1], q.option[0][0][2], q.option[0][1][2]};
-        for (int s = 0; s < 2; ++s) blame(nodes, s);
-        if (failure.empty())
-          failure = "the cell (" + node_text(nodes[0]) + ", " + node_text(nodes[1]) + ", " + node_text(nodes[2]) +
-                    ", " + node_text(nodes[3]) + ") has no split that is positive in both polygons";
-        chosen = 0;
-      }
+      if (chosen < 0) chosen = used.count(edge_key(pair, web.corners, q.diagonal[0][0], q.diagonal[0][1])) ? 1 : 0;
       for (const Triangle& t : q.option[chosen]) {
         triangles.push_back(t);
         for (int j = 0; j < 3; ++j) used.insert(edge_key(pair, web.corners, t[j], t[(j + 1) % 3]));
       }
     }
+    // Rounding first (see untangle), then what is left is blamed on the
+    // clusters involved, which shrink for the next attempt.
+    std::vector<Vec2> repaired[2] = {e[0].position, e[1].position};
+    std::vector<char> shrink[2] = {std::vector<char>(web.corners, 0), std::vector<char>(web.corners, 0)};
+    std::string failure;
+    bool any_bad = false;
+    for (int s = 0; s < 2; ++s) {
+      if (untangle(repaired[s], triangles, web.corners)) continue;
+      for (const Triangle& t : triangles) {
+        if (positive(repaired[s], t)) continue;
+        any_bad = true;
+        if (failure.empty())
+          failure = "triangle (" + node_text(t[0]) + ", " + node_text(t[1]) + ", " + node_text(t[2]) +
+                    ") is inverted in the " + (s ? "target" : "source");
+        for (int v : t) {
+          const int k = embedder[s].cluster_of(v);
+          if (k >= 0) shrink[s][k] = 1;
+        }
+      }
+    }
     if (!any_bad) {
-      best.source = e[0].position;
-      best.target = e[1].position;
+      best.source = std::move(repaired[0]);
+      best.target = std::move(repaired[1]);
       best.triangles = std::move(triangles);
       best.ok = true;
       return best;
@@ -819,7 +915,8 @@ Mesh spiderweb_piece(const PolygonPair& pair, const std::vector<std::array<int, 
 // of their ends, which both polygons share, so any set of them cuts both
 // polygons into the same pieces; the spiderweb is then needed only where
 // the polygons differ, which keeps its quadratic size local.
-std::set<std::pair<int, int>> common_diagonals(const PolygonPair& pair, const std::vector<std::array<int, 3>>& source_base) {
+std::set<std::pair<int, int>> common_diagonals(const PolygonPair& pair, const std::vector<std::array<int, 3>>& source_base,
+                                              double min_new_angle) {
   const int n = int(pair.corners.size());
   const CornerPolygon target = pair.target();
   std::vector<std::pair<int, int>> candidates;
@@ -843,7 +940,7 @@ std::set<std::pair<int, int>> common_diagonals(const PolygonPair& pair, const st
     for (int neighbour : {(from + 1) % n, (from + n - 1) % n}) {
       const Vec2& e = polygon.at(neighbour);
       const double ux = e[0] - v[0], uy = e[1] - v[1], wx = q[0] - v[0], wy = q[1] - v[1];
-      if (std::atan2(std::abs(ux * wy - uy * wx), ux * wx + uy * wy) < kMinNewAngle) return false;
+      if (std::atan2(std::abs(ux * wy - uy * wx), ux * wx + uy * wy) < min_new_angle) return false;
     }
     return true;
   };
@@ -931,6 +1028,31 @@ std::vector<std::vector<int>> pieces_of(const std::vector<std::array<int, 3>>& t
   return pieces;
 }
 
+// Smallest altitude, in units of the spacing of doubles at its coordinates,
+// of the triangles of `base` next to a cut, in either polygon: how much room
+// rounding has before one of them flattens.
+double cut_room(const PolygonPair& pair, const std::vector<std::array<int, 3>>& base,
+                const std::set<std::pair<int, int>>& cuts) {
+  double room = std::numeric_limits<double>::infinity();
+  for (const auto& t : base) {
+    bool next_to_cut = false;
+    for (int j = 0; j < 3; ++j)
+      next_to_cut = next_to_cut || cuts.count({std::min(t[j], t[(j + 1) % 3]), std::max(t[j], t[(j + 1) % 3])});
+    if (!next_to_cut) continue;
+    for (const CornerPolygon& polygon : {pair.source(), pair.target()}) {
+      const Vec2 a = polygon.at(t[0]), b = polygon.at(t[1]), c = polygon.at(t[2]);
+      const double cross = std::abs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+      const double longest = std::max({std::hypot(b[0] - a[0], b[1] - a[1]), std::hypot(c[0] - b[0], c[1] - b[1]),
+                                       std::hypot(a[0] - c[0], a[1] - c[1])});
+      double magnitude = 0;
+      for (const Vec2& p : {a, b, c}) magnitude = std::max({magnitude, std::abs(p[0]), std::abs(p[1])});
+      const double spacing = std::max(magnitude, std::numeric_limits<double>::min()) * std::numeric_limits<double>::epsilon();
+      room = std::min(room, cross / std::max(longest, std::numeric_limits<double>::min()) / spacing);
+    }
+  }
+  return room;
+}
+
 Mesh improved_mesh(const PolygonPair& pair, const std::vector<std::array<int, 3>>& source_base,
                    const std::vector<std::array<int, 3>>& target_base, const CompatibleTriangulationOptions& options,
                    int& spiderweb_steiner) {
@@ -946,12 +1068,51 @@ Mesh improved_mesh(const PolygonPair& pair, const std::vector<std::array<int, 3>
     mesh.alive.assign(1, 1);
     return mesh;
   }
-  const std::set<std::pair<int, int>> cuts = common_diagonals(pair, source_base);
+  // Candidates come from the source's triangulation; if none of them is a
+  // diagonal of the target too, the target's are tried in the source (the
+  // two Delaunay triangulations can differ only by a sliver's diagonal, as
+  // in a quadrilateral whose source copy has a corner flat to 1e-7 rad).
+  auto find_cuts = [&](double min_new_angle, const std::vector<std::array<int, 3>>*& base) {
+    std::set<std::pair<int, int>> found = common_diagonals(pair, source_base, min_new_angle);
+    base = &source_base;
+    if (found.empty()) {
+      const PolygonPair swapped{pair.corners, pair.target_positions, pair.source_positions};
+      found = common_diagonals(swapped, target_base, min_new_angle);
+      base = &target_base;
+    }
+    return found;
+  };
+  const std::vector<std::array<int, 3>>* cut_base = nullptr;
+  std::set<std::pair<int, int>> cuts = find_cuts(kMinNewAngle, cut_base);
   if (cuts.empty()) {
-    Mesh piece = spiderweb_piece(pair, source_base, target_base, options, spiderweb_steiner);
-    return piece;
+    try {
+      return spiderweb_piece(pair, source_base, target_base, options, spiderweb_steiner);
+    } catch (const VerificationError&) {
+      // The spiderweb needs room for its Steiner vertices. In a needle (a
+      // far corner facing a few nearly collinear ones) every diagonal makes
+      // an angle below kMinNewAngle and the center face can be thinner than
+      // the spacing of doubles, so no Steiner vertex fits. A diagonal that
+      // the exact predicates accept in both polygons is still valid: take
+      // it, thin as it is, rather than fail.
+      // Of the two candidate sets, the one whose cut-off triangles stand
+      // highest above their sides in units of the spacing of doubles there
+      // (what every morph frame must resolve) is taken.
+      const PolygonPair swapped{pair.corners, pair.target_positions, pair.source_positions};
+      std::set<std::pair<int, int>> from_source = common_diagonals(pair, source_base, 0.0);
+      std::set<std::pair<int, int>> from_target = common_diagonals(swapped, target_base, 0.0);
+      const double source_room = cut_room(pair, source_base, from_source);
+      const double target_room = cut_room(pair, target_base, from_target);
+      if (from_source.empty() && from_target.empty()) throw;
+      if (!from_source.empty() && (from_target.empty() || source_room >= target_room)) {
+        cuts = std::move(from_source);
+        cut_base = &source_base;
+      } else {
+        cuts = std::move(from_target);
+        cut_base = &target_base;
+      }
+    }
   }
-  for (const std::vector<int>& cycle : pieces_of(source_base, cuts)) {
+  for (const std::vector<int>& cycle : pieces_of(*cut_base, cuts)) {
     PolygonPair sub;
     for (int k : cycle) sub.corners.push_back(pair.corners[k]);
     sub.source_positions = pair.source_positions;

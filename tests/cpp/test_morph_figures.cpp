@@ -109,23 +109,3 @@ TEST_CASE("regression pairs in tests/data/regressions morph with every frame ver
   }
   CHECK(pairs.size() >= 1);
 }
-
-TEST_CASE("open regression pairs in tests/data/regressions/open are refused, never morphed invalidly",
-          "[morph_figures]") {
-  // Pairs found by stickmorph_random_pairs that the engine cannot morph yet:
-  // valid and compatible (checked here), yet the spiderweb embedding fails
-  // in floating point next to a vertex very close to an edge (see each
-  // source's name field). Until that is fixed the engine must refuse them
-  // with a VerificationError, never return an invalid frame or fail
-  // otherwise. A pair that starts to pass makes this test fail: move it up
-  // to tests/data/regressions, where it is replayed as a passing case.
-  const auto pairs = regression_pairs(std::string(STICKMORPH_TEST_DATA) + "/regressions/open");
-  for (const auto& [source_path, target_path] : pairs) {
-    INFO(source_path);
-    const StickFigure source = read_figure_file(source_path), target = read_figure_file(target_path);
-    REQUIRE(check_compatibility(source, target).compatible());
-    const std::string outcome = morph_and_verify(source, target, 12);
-    INFO(outcome);
-    CHECK(outcome.rfind("VerificationError: ", 0) == 0);
-  }
-}
