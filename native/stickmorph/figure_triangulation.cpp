@@ -1,5 +1,6 @@
 #include "stickmorph/figure_triangulation.h"
 
+
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
@@ -13,6 +14,7 @@
 #include <queue>
 #include <set>
 
+#include "stickmorph/argument_limits.h"
 #include "stickmorph/compatibility.h"
 #include "stickmorph/decomposition.h"
 #include "stickmorph/exact_predicates.h"
@@ -307,6 +309,9 @@ FigureTriangulation triangulate_figures(const StickFigure& source, const StickFi
                                         const FigureTriangulationOptions& options, FigureTriangulationStats* stats) {
   if (options.enclosure_sides < 3)
     throw InvalidArgumentError("the enclosure needs at least 3 sides, got " + std::to_string(options.enclosure_sides));
+  if (options.enclosure_sides > kMaxEnclosureSides)
+    throw InvalidArgumentError("the enclosure can have at most " + std::to_string(kMaxEnclosureSides) + " sides, got " +
+                               std::to_string(options.enclosure_sides));
   FigureTriangulationStats measured;
   auto stage_start = Clock::now();
   // Algorithm 3, step 1.

@@ -2,6 +2,7 @@
 
 #include "figures.h"
 #include "polygons.h"
+#include "stickmorph/argument_limits.h"
 #include "stickmorph/compatibility.h"
 #include "stickmorph/figure_triangulation.h"
 
@@ -138,4 +139,11 @@ TEST_CASE("bad requests", "[triangulate_figures]") {
   FigureTriangulationOptions options;
   options.enclosure_sides = 2;
   CHECK_THROWS_WITH(triangulate_figures(star, star, options), Contains("at least 3 sides"));
+  // The annulus work grows quadratically in the sides; a huge count would
+  // hang the caller, so the engine itself refuses it.
+  options.enclosure_sides = kMaxEnclosureSides + 1;
+  CHECK_THROWS_AS(triangulate_figures(star, star, options), InvalidArgumentError);
+  CHECK_THROWS_WITH(triangulate_figures(star, star, options), Contains("at most 1000 sides"));
+  options.enclosure_sides = kMaxEnclosureSides;
+  CHECK_NOTHROW(verify_figure_triangulation(triangulate_figures(star, star, options), star));
 }
