@@ -148,7 +148,7 @@ def fmt_ratio(value):
 
 def fmt_exponent(fit):
     slope, count = fit
-    return f"{slope:.2f} ({count} sizes)" if slope is not None else f"n/a ({count} sizes ≥ {FIT_MIN_N})"
+    return f"{slope:.2f} ({count})" if slope is not None else f"n/a (only {count})"
 
 
 def cell_text(text):
@@ -177,16 +177,23 @@ def loglog_svg(path, title, x_label, y_label, series, note=None, least=0.0):
     y <= least (at least those y <= 0, which a log axis cannot show) are left
     out; the caller says so in the note."""
     series = [dict(s, points=[(x, y) for x, y in s["points"] if y > least]) for s in series]
+    series = [s for s in series if s["points"]]  # nothing to draw, nothing to list
     width, height = 800, 460
     left, right, top, bottom = 78, 250, 40, 58
     xs = [x for s in series for x, y in s["points"] if y > 0]
     ys = [y for s in series for x, y in s["points"] if y > 0]
     if not xs:
         xs, ys = [10, 10000], [1, 10]
-    x0, x1 = math.floor(math.log10(min(xs))), math.ceil(math.log10(max(xs)))
-    y0, y1 = math.floor(math.log10(min(ys))), math.ceil(math.log10(max(ys)))
-    x1 = max(x1, x0 + 1)
-    y1 = max(y1, y0 + 1)
+    def axis_range(values):
+        # Whole decades, except that a value just below a decade (n = 9)
+        # does not stretch the axis by a whole empty decade.
+        lo, hi = math.log10(min(values)), math.log10(max(values))
+        lo = math.floor(lo) if lo - math.floor(lo) < 0.9 else lo - 0.03
+        hi = math.ceil(hi) if math.ceil(hi) - hi < 0.9 else hi + 0.03
+        return lo, max(hi, lo + 1)
+
+    x0, x1 = axis_range(xs)
+    y0, y1 = axis_range(ys)
     plot_w, plot_h = width - left - right, height - top - bottom
 
     def px(x):
@@ -200,20 +207,26 @@ def loglog_svg(path, title, x_label, y_label, series, note=None, least=0.0):
            f'<rect width="{width}" height="{height}" fill="white"/>',
            f'<text x="{left + plot_w / 2}" y="22" text-anchor="middle" font-size="15">{html.escape(title)}</text>']
     # Grid: decades solid, 2 and 5 light.
-    for exponent in range(x0, x1 + 1):
-        x = px(10 ** exponent)
-        out.append(f'<line x1="{x:.1f}" y1="{top}" x2="{x:.1f}" y2="{top + plot_h}" stroke="#ccc"/>')
-        out.append(f'<text x="{x:.1f}" y="{top + plot_h + 18}" text-anchor="middle">{nice_label(10 ** exponent)}</text>')
+    def inside(lo, hi, exponent):
+        return lo - 1e-9 <= exponent <= hi + 1e-9
+
+    for exponent in range(math.floor(x0), math.ceil(x1) + 1):
+        if inside(x0, x1, exponent):
+            x = px(10 ** exponent)
+            out.append(f'<line x1="{x:.1f}" y1="{top}" x2="{x:.1f}" y2="{top + plot_h}" stroke="#ccc"/>')
+            out.append(f'<text x="{x:.1f}" y="{top + plot_h + 18}" text-anchor="middle">'
+                       f'{nice_label(10 ** exponent)}</text>')
         for minor in (2, 5):
-            if exponent < x1:
+            if inside(x0, x1, exponent + math.log10(minor)):
                 xm = px(minor * 10 ** exponent)
                 out.append(f'<line x1="{xm:.1f}" y1="{top}" x2="{xm:.1f}" y2="{top + plot_h}" stroke="#eee"/>')
-    for exponent in range(y0, y1 + 1):
-        y = py(10 ** exponent)
-        out.append(f'<line x1="{left}" y1="{y:.1f}" x2="{left + plot_w}" y2="{y:.1f}" stroke="#ccc"/>')
-        out.append(f'<text x="{left - 6}" y="{y + 4:.1f}" text-anchor="end">{nice_label(10 ** exponent)}</text>')
+    for exponent in range(math.floor(y0), math.ceil(y1) + 1):
+        if inside(y0, y1, exponent):
+            y = py(10 ** exponent)
+            out.append(f'<line x1="{left}" y1="{y:.1f}" x2="{left + plot_w}" y2="{y:.1f}" stroke="#ccc"/>')
+            out.append(f'<text x="{left - 6}" y="{y + 4:.1f}" text-anchor="end">{nice_label(10 ** exponent)}</text>')
         for minor in (2, 5):
-            if exponent < y1:
+            if inside(y0, y1, exponent + math.log10(minor)):
                 ym = py(minor * 10 ** exponent)
                 out.append(f'<line x1="{left}" y1="{ym:.1f}" x2="{left + plot_w}" y2="{ym:.1f}" stroke="#eee"/>')
     out.append(f'<rect x="{left}" y="{top}" width="{plot_w}" height="{plot_h}" fill="none" stroke="#333"/>')
@@ -296,23 +309,27 @@ def write_report(records, polygon_pairs, run, out_path, plot_dir):
         worst = max(ratios, key=lambda rc: rc[0])
         headline.append(f"Improved Steiner vertices per input vertex, n ≥ {FIT_MIN_N}: at most "
                         f"{fmt_ratio(worst[0])} ({worst[1].family}, n = {worst[1].n}); the paper's bound is 11.")
-    for method in ("sg2001", "aronov"):
-        pairs = []
-        for c in ok_improved:
-            other = cells.get((c.family, c.requested, method))
-            if other and other.ok and c.result["steiner"] > 0:
-                pairs.append((other.result["steiner"] / c.result["steiner"], other, c))
-        if pairs:
-            best = max(pairs, key=lambda p: p[0])
-            headline.append(f"{method} needs up to {fmt_ratio(best[0])} times the Steiner vertices of improved "
-                            f"({fmt_int(best[1].result['steiner'])} against {fmt_int(best[2].result['steiner'])}, "
-                            f"{best[2].family}, n = {best[2].n}).")
+    all_three = [c for c in ok_improved
+                 if all(cells.get((c.family, c.requested, m)) and cells[(c.family, c.requested, m)].ok
+                        for m in METHODS)]
+    if all_three:
+        total = {m: sum(cells[(c.family, c.requested, m)].result["steiner"] for c in all_three) for m in METHODS}
+        headline.append(f"Steiner vertices in total over the {len(all_three)} cases where all three methods ran "
+                        f"(n ≤ {max(c.n for c in all_three)}): aronov {fmt_int(total['aronov'])}, sg2001 "
+                        f"{fmt_int(total['sg2001'])}, improved {fmt_int(total['improved'])}.")
     if largest:
-        r = largest.result
-        headline.append(f"Largest case run: {largest.family}, n = {largest.n}: triangulation "
-                        f"{fmt_ms(r['triangulate_ms'])}, {fmt_ms(r['solve_frame_ms'])} solve and "
-                        f"{fmt_ms(r['verify_frame_ms'])} exact verification per frame, peak "
-                        f"{largest.peak_mib:.0f} MiB.")
+        big = [c for c in ok_improved if c.requested == largest.requested]
+        headline.append(f"At n ≈ {largest.requested}, improved compatible triangulation takes " +
+                        ", ".join(f"{fmt_ms(c.result['triangulate_ms'])} ({c.family})" for c in big) +
+                        "; a frame then costs " +
+                        ", ".join(f"{fmt_ms(c.result['solve_frame_ms'] + c.result['verify_frame_ms'])}"
+                                  for c in big) +
+                        " (solve and exact verification), in the same order; peak memory at most "
+                        f"{max(c.peak_mib for c in big):.0f} MiB.")
+    unfinished = [c for c in cells.values() if c.method == "improved" and not c.ok]
+    if unfinished:
+        headline.append("Improved cases without a result: " +
+                        "; ".join(f"{c.family} n ≈ {c.requested} ({c.why_not()})" for c in unfinished) + ".")
     add("\n".join(f"- {h}" for h in headline) + "\n")
 
     # Corpus.
@@ -347,8 +364,17 @@ def write_report(records, polygon_pairs, run, out_path, plot_dir):
     add("Steiner vertices of the whole compatible triangulation (Algorithm 3: every face, the annulus cut's "
         "bends included), and in brackets their ratio to the input vertices n. `aronov` and `sg2001` build the "
         "paper's spiderwebs, which grow quadratically on long thin faces; they are run only up to "
-        f"{run['aronov_max']} and {run['sg2001_max']} requested vertices and not past a size where they hit "
-        "the time or memory limit. Each cell that was not run says why.\n")
+        f"{run['aronov_max']} and {run['sg2001_max']} requested vertices (the size cap), and no method is run "
+        "past a size where it hit the time or memory limit. Each cell that was not run says why.\n")
+    for method, cap in (("aronov", run["aronov_max"]), ("sg2001", run["sg2001_max"])):
+        at_cap = [c for c in cells.values() if c.method == method and c.ok and c.requested == cap]
+        if at_cap:
+            c = max(at_cap, key=lambda c: c.result["steiner"])
+            add(f"- Why {method} stops at {cap}: its largest case there, {c.family} (n = {c.n}), took "
+                f"{fmt_ms(c.result['triangulate_ms'])} and {c.peak_mib:.0f} MiB for "
+                f"{fmt_int(c.result['steiner'])} Steiner vertices; the next size is 3.3 times larger, so growing "
+                "quadratically it would need about 11 times as much, beyond this run's time and memory budget.")
+    add("")
     rows = []
     for family in families:
         for size in sizes:
@@ -414,17 +440,19 @@ def write_report(records, polygon_pairs, run, out_path, plot_dir):
         add(f"![Time per stage, {family}]({plot_rel}/stages_{family}.svg)\n")
 
     add(f"### Fitted growth exponents\n")
-    add(f"Least-squares slope of log(time) against log(n) over the sizes with n ≥ {FIT_MIN_N} (at least three "
-        "needed); 1 is linear, 2 quadratic. Per-frame stages are per frame.\n")
-    rows = []
-    for family in families:
-        cs = [c for c in improved_cells(cells, family, sizes) if c.ok]
-        row = [family, fmt_exponent(fit_exponent([(c.n, c.result["triangulate_ms"]) for c in cs]))]
-        for key, _, _ in STAGES:
-            row.append(fmt_exponent(fit_exponent([(c.n, c.result[key]) for c in cs])))
-        row.append(fmt_exponent(fit_exponent([(c.n, c.peak_mib) for c in cs])))
-        rows.append(row)
-    add(table(["family", "triangulate (total)"] + [label for _, label, _ in STAGES] + ["peak memory"], rows))
+    add(f"Least-squares slope of log(time) against log(n) over the completed sizes with n ≥ {FIT_MIN_N}, "
+        "in brackets how many sizes (at least three needed): 1 is linear growth, 2 quadratic. Stages that "
+        "took under 1 µs are left out of the fit.\n")
+    per_family = {f: [c for c in improved_cells(cells, f, sizes) if c.ok] for f in families}
+
+    def exponent_row(label, value):
+        return [label] + [fmt_exponent(fit_exponent([(c.n, value(c)) for c in per_family[f]
+                                                     if value(c) >= 1e-3])) for f in families]
+
+    rows = [exponent_row("triangulate (total)", lambda c: c.result["triangulate_ms"])]
+    rows += [exponent_row(label, lambda c, key=key: c.result[key]) for key, label, _ in STAGES]
+    rows.append(exponent_row("peak memory (MiB)", lambda c: c.peak_mib))
+    add(table(["stage"] + families, rows))
     add("")
 
     # Where the time goes.
@@ -439,7 +467,12 @@ def write_report(records, polygon_pairs, run, out_path, plot_dir):
         parts = [(r[key], label) for key, label, per_frame in STAGES[1:6]]
         top_ms, top_label = max(parts)
         share = top_ms / r["triangulate_ms"] if r["triangulate_ms"] > 0 else 0
-        notes.append(f"{family}, n = {c.n}: {top_label} takes {share:.0%} of {fmt_ms(r['triangulate_ms'])}.")
+        note = f"{family}, n = {c.n}: {top_label} takes {share:.0%} of {fmt_ms(r['triangulate_ms'])}"
+        sg = cells.get((family, c.requested, "sg2001"))
+        if sg and sg.ok:
+            note += (f"; the sg2001 spiderweb of the same pair has {fmt_int(sg.result['steiner'])} Steiner "
+                     f"vertices, improved keeps {fmt_int(r['steiner'])}")
+        notes.append(note + ".")
     add("\n".join(f"- {n}" for n in notes) + "\n")
     add("The exterior face is where the figures differ most: for trees and polylines it is the only face, "
         "a weakly simple polygon of 2(n−1) corners. The improved method first cuts it along diagonals "

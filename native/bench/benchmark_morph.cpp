@@ -428,8 +428,8 @@ int run(int argc, char** argv) {
         if (stopped.count(method)) {
           not_run = stopped[method];
         } else if (cap >= 0 && requested > cap) {
-          not_run = "above the size cap of " + std::to_string(cap) +
-                    " vertices: its spiderweb grows quadratically on long thin faces";
+          // Why the cap exists is said once in the report, not in every cell.
+          not_run = "n > " + std::to_string(cap) + " (size cap)";
         }
         std::cerr << "[" << done << "/" << total << ", " << int(ms_since(run_start) / 1000) << " s] " << family
                   << " n~" << requested << " " << name << ": " << std::flush;
@@ -448,8 +448,8 @@ int run(int argc, char** argv) {
           } else {
             record.set("reason", r.body);
             if (r.status == "timeout" || r.status == "out_of_memory")
-              stopped[method] = "not run past n~" + std::to_string(requested) + ", where it was " +
-                                (r.status == "timeout" ? "stopped at the time limit" : "out of memory");
+              stopped[method] = std::string(r.status == "timeout" ? "timed out" : "out of memory") + " at n~" +
+                                std::to_string(requested);
           }
           std::cerr << r.status << " in " << int(r.wall_ms) << " ms, peak " << r.peak_kib / 1024 << " MiB"
                     << (r.status == "ok" ? "" : ": " + r.body) << "\n";
