@@ -3,18 +3,24 @@
 # (through ctest), the pytest tests of the Python module and the CLI, and the
 # Blender add-on's tests in headless Blender.
 #
-#   scripts/test.sh           the regular suite
-#   scripts/test.sh --long    also long fuzz and stress modes, for tests that
-#                             read STICKMORPH_LONG=1
+# Then the sanitizer suite (scripts/sanitize.sh, docs/TESTING.md): the Catch2
+# tests again under AddressSanitizer + UndefinedBehaviorSanitizer (clang), and
+# each libFuzzer target on its seed corpus.
+#
+#   scripts/test.sh           the regular suite, 60 s per fuzz target
+#   scripts/test.sh --long    also the long modes: 10,000 random compatible
+#                             pairs with a random seed (failures saved to
+#                             tests/data/regressions), 10 minutes per fuzz target
 set -euo pipefail
 
 usage() {
   echo "usage: scripts/test.sh [--long]" >&2
 }
 
+fuzz_seconds=60
 for argument in "$@"; do
   case "$argument" in
-    --long) export STICKMORPH_LONG=1 ;;
+    --long) export STICKMORPH_LONG=1; fuzz_seconds=600 ;;
     -h|--help) usage; exit 0 ;;
     *) echo "scripts/test.sh: unknown argument: $argument" >&2; usage; exit 2 ;;
   esac
@@ -45,5 +51,10 @@ STICKMORPH_BUILD_DIR="$PWD/build" "$PYTHON" -m pytest tests/python -q
 
 section "Blender add-on tests (pytest in headless Blender)"
 STICKMORPH_BUILD_DIR="$PWD/build" bash scripts/blender_tests.sh
+
+section "Sanitizer suite (ASan + UBSan, libFuzzer)"
+# The random-pair long mode already ran above; under the sanitizers it would
+# only repeat it ten times slower.
+env -u STICKMORPH_LONG bash scripts/sanitize.sh --fuzz-time "$fuzz_seconds"
 
 section "All tests passed"
