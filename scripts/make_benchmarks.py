@@ -487,7 +487,7 @@ def write_report(records, polygon_pairs, run, out_path, plot_dir):
         "the angle quality, and the `std::set` of edges of the redundancy removal. Before commit 39851c3 "
         "(spiderweb rounding repair and exactly valid common diagonals in needles) the same corpus's "
         "10⁴-vertex tree took 58 s in its exterior face; after it, a few seconds, while the 10⁴-vertex "
-        "polygon went from 23 s to about a minute.\n")
+        "polygon went from 23 s to 52–60 s (two runs).\n")
 
     # Per frame.
     series = []
