@@ -295,15 +295,27 @@ class SpiderwebEmbedder {
   }
 
   // Distance from corner k to the nearest placed node that is not at the
-  // same vertex and not in its cluster.
-  double clearance(int k) const {
+  // same vertex and not in its cluster. The candidates are swept in order of
+  // x outwards from the corner, stopping once the x gap alone exceeds the
+  // best distance: a scan of every node for every corner is quadratic and
+  // dominated large spiderwebs (10^5 nodes times 10^3 corners).
+  double clearance(int k) {
+    if (clearance_order_.empty()) {
+      for (int node = 0; node < web_.node_count; ++node)
+        if (node < web_.corners || extra_of_[node] < 0) clearance_order_.push_back(node);
+      std::sort(clearance_order_.begin(), clearance_order_.end(),
+                [&](int a, int b) { return base_[a][0] < base_[b][0]; });
+    }
     double best = std::numeric_limits<double>::infinity();
     const Vec2 c = base_[k];
-    for (int node = 0; node < web_.node_count; ++node) {
-      if (node < web_.corners ? polygon_.corners[node] == polygon_.corners[k] : extra_of_[node] >= 0)
-        continue;
+    auto consider = [&](int node) {
+      if (node < web_.corners && polygon_.corners[node] == polygon_.corners[k]) return;
       best = std::min(best, std::hypot(base_[node][0] - c[0], base_[node][1] - c[1]));
-    }
+    };
+    const auto start = std::lower_bound(clearance_order_.begin(), clearance_order_.end(), c[0],
+                                        [&](int node, double x) { return base_[node][0] < x; });
+    for (auto it = start; it != clearance_order_.end() && base_[*it][0] - c[0] < best; ++it) consider(*it);
+    for (auto it = start; it != clearance_order_.begin() && c[0] - base_[*(it - 1)][0] < best; --it) consider(*(it - 1));
     return std::isfinite(best) ? best : 1.0;
   }
 
@@ -371,6 +383,7 @@ class SpiderwebEmbedder {
   std::vector<int> placed_;
   std::vector<int> extra_of_;
   std::vector<double> cluster_radius_;
+  std::vector<int> clearance_order_;  // corners and placed Steiner nodes, by x (see clearance)
   std::vector<std::vector<Vec2>> segment_direction_;  // per corner, outermost segment first
   std::vector<std::vector<char>> segment_feasible_;   // false: aimed at actual positions
   // constraints_[k][j]: (third node, required sign) for segment j of corner k.
@@ -658,15 +671,33 @@ int remove_redundant_steiner(const PolygonPair& pair, Mesh& mesh) {
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     for (int j = 0; j < 3; ++j)
       edges.insert(edge_key(pair, mesh.corners, mesh.triangles[t][j], mesh.triangles[t][(j + 1) % 3]));
-  for (bool changed = true; changed;) {
+  // A vertex whose removal failed is tried again only after its star
+  // changed: the outcome depends only on its link, the positions and the
+  // edges between link vertices, and an edge between two of its link
+  // vertices is erased only when one of them is removed, which changes its
+  // star (added edges can only forbid more). Retrying every vertex on every
+  // pass made large spiderwebs quadratic.
+  //
+  // The re-triangulation costs d^3 for a link of d vertices, and links grow
+  // as neighbours go (the central vertex's reached 2000 in a 10^4-vertex
+  // polygon): vertices with long links are tried only once no short-linked
+  // vertex can go, so each is tried a few times rather than after every
+  // neighbour's removal.
+  constexpr int kShortLink = 32;
+  std::vector<char> dirty(nodes, 1);
+  for (bool changed = true, long_links = false; changed || !long_links;) {
+    if (!changed) long_links = true;  // nothing short left: allow long links
+    else if (long_links) long_links = false;  // a long one went: short ones again first
     changed = false;
     // Newest Steiner vertices first: redundant levels sit at path tops.
     for (int v = nodes - 1; v >= mesh.corners; --v) {
-      if (removed[v]) continue;
+      if (removed[v] || !dirty[v]) continue;
       std::vector<int> star;
       for (int t : around[v])
         if (mesh.alive[t]) star.push_back(t);
       around[v] = star;
+      if (!long_links && int(star.size()) > kShortLink) continue;  // stays dirty
+      dirty[v] = 0;
       const std::vector<int> link = link_of(mesh, star, v);
       const int d = int(link.size());
       if (d < 3) continue;
@@ -716,7 +747,7 @@ int remove_redundant_steiner(const PolygonPair& pair, Mesh& mesh) {
         const int id = int(mesh.triangles.size());
         mesh.triangles.push_back(t);
         mesh.alive.push_back(1);
-        for (int u : t) around[u].push_back(id);
+        for (int u : t) around[u].push_back(id), dirty[u] = 1;
         for (int e = 0; e < 3; ++e) edges.insert(edge_key(pair, mesh.corners, t[e], t[(e + 1) % 3]));
         stack.push_back({i, k});
         stack.push_back({k, j});
