@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "stickmorph/figure_io.h"
 #include "stickmorph/json.h"
 
 namespace stickmorph::fuzz {
@@ -34,32 +35,7 @@ void trace(const std::string& what) {
   if (tracing()) std::fprintf(stderr, "outcome: %s\n", what.c_str());
 }
 
-std::string figure_to_json(const StickFigure& figure) {
-  JsonWriter writer;
-  writer.begin_object();
-  writer.key("name");
-  writer.value(figure.name);
-  writer.key("vertices");
-  writer.begin_array();
-  for (const Vec2& vertex : figure.vertices) {
-    writer.begin_array();
-    writer.value(vertex[0]);
-    writer.value(vertex[1]);
-    writer.end_array();
-  }
-  writer.end_array();
-  writer.key("edges");
-  writer.begin_array();
-  for (const Edge& edge : figure.edges) {
-    writer.begin_array();
-    writer.value(edge[0]);
-    writer.value(edge[1]);
-    writer.end_array();
-  }
-  writer.end_array();
-  writer.end_object();
-  return writer.finish();
-}
+std::string figure_to_json(const StickFigure& figure) { return figure_json(figure, figure.name); }
 
 bool same_figure(const StickFigure& a, const StickFigure& b) {
   // Bitwise comparison of the doubles: == would let -0.0 stand for 0.0,

@@ -189,4 +189,31 @@ StickFigure read_figure_file(const std::string& path) {
   return parse_figure(text, path);
 }
 
+std::string figure_json(const StickFigure& figure, const std::string& name) {
+  JsonWriter json;
+  json.begin_object();
+  json.key("name");
+  json.value(name);
+  json.key("vertices");
+  json.begin_array();
+  for (const Vec2& p : figure.vertices) {
+    json.begin_array();
+    json.value(p[0]);
+    json.value(p[1]);
+    json.end_array();
+  }
+  json.end_array();
+  json.key("edges");
+  json.begin_array();
+  for (const Edge& e : figure.edges) {
+    json.begin_array();
+    json.value(e[0]);
+    json.value(e[1]);
+    json.end_array();
+  }
+  json.end_array();
+  json.end_object();
+  return json.finish();
+}
+
 }  // namespace stickmorph

@@ -19,4 +19,9 @@ StickFigure parse_figure(const std::string& text, const std::string& origin);
 /// Reads and parses the file at `path`. Throws JsonError if it cannot be read.
 StickFigure read_figure_file(const std::string& path);
 
+/// The figure as the JSON text of a stick figure file, named `name`, with
+/// shortest round-trip decimals: parse_figure reads back the same doubles
+/// (test regression files, the fuzzer's round-trip oracle).
+std::string figure_json(const StickFigure& figure, const std::string& name);
+
 }  // namespace stickmorph

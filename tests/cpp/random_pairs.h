@@ -51,6 +51,7 @@
 #include "stickmorph/exact_predicates.h"
 #include "stickmorph/figure_triangulation.h"
 #include "stickmorph/frame_verification.h"
+#include "stickmorph/figure_io.h"
 #include "stickmorph/json.h"
 #include "stickmorph/morph.h"
 #include "stickmorph/stick_figure.h"
@@ -682,31 +683,8 @@ inline FigureFeatures features_of(const StickFigure& f) {
 /// Writes a stick figure file (../shared/FORMAT.md) that read_figure_file
 /// reads back exactly (shortest round-trip decimals).
 inline void write_figure_file(const std::string& path, const StickFigure& figure, const std::string& name) {
-  JsonWriter json;
-  json.begin_object();
-  json.key("name");
-  json.value(name);
-  json.key("vertices");
-  json.begin_array();
-  for (const Vec2& p : figure.vertices) {
-    json.begin_array();
-    json.value(p[0]);
-    json.value(p[1]);
-    json.end_array();
-  }
-  json.end_array();
-  json.key("edges");
-  json.begin_array();
-  for (const Edge& e : figure.edges) {
-    json.begin_array();
-    json.value(e[0]);
-    json.value(e[1]);
-    json.end_array();
-  }
-  json.end_array();
-  json.end_object();
   std::ofstream out(path, std::ios::binary);
-  out << json.finish() << '\n';
+  out << figure_json(figure, name) << '\n';
   if (!out) throw std::runtime_error("cannot write " + path);
 }
 
