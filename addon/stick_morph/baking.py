@@ -55,7 +55,10 @@ def mesh_world_data(obj):
     mesh.vertices.foreach_get("co", co)
     local = co.reshape(-1, 3).astype(np.float64)
     matrix = np.array(obj.matrix_world, dtype=np.float64)
-    world = local @ matrix[:3, :3].T + matrix[:3, 3]
+    # A non-finite coordinate stays non-finite here and is reported, naming
+    # the object and the vertex, by core's validation; numpy need not warn.
+    with np.errstate(invalid="ignore", over="ignore"):
+        world = local @ matrix[:3, :3].T + matrix[:3, 3]
     edges = np.empty(len(mesh.edges) * 2, dtype=np.int32)
     mesh.edges.foreach_get("vertices", edges)
     return world, edges.reshape(-1, 2).astype(np.int64), len(mesh.polygons)
