@@ -9,6 +9,7 @@ set -euo pipefail
 packages=(
   blender         # the add-on and, later, the demo's bake and render
   cmake
+  make            # cmake's default generator; a minimal system has none
   g++
   pybind11-dev
   libeigen3-dev
@@ -19,6 +20,9 @@ packages=(
   python3-pytest
   clang-14            # scripts/sanitize.sh: clang++-14 with ASan, UBSan, libFuzzer
   libclang-rt-14-dev  # the sanitizer and libFuzzer runtimes of clang 14
+  libegl1 libegl-mesa0  # headless Workbench/EEVEE render through surfaceless EGL
+  xvfb xauth          # the GUI test of Adjust Last Operation (xvfb-run)
+  debootstrap         # scripts/blender_chroot.sh: Debian 13 and sid for Blender 4.3 and 5.2
 )
 
 missing=()

@@ -95,7 +95,9 @@ py::str to_str(const std::string& text) {
   return py::reinterpret_steal<py::str>(object);
 }
 
-void set_error(py::handle type, const char* message) {
+// Not named set_error: pybind11 2.12+ has pybind11::set_error(handle, const char*),
+// and argument-dependent lookup on py::handle makes an unqualified call ambiguous.
+void raise_with_message(py::handle type, const char* message) {
   PyErr_SetObject(type.ptr(), to_str(message).ptr());
 }
 
@@ -470,17 +472,17 @@ void translate_exception(std::exception_ptr pointer) {
     instance.attr("edges") = to_list(e.edges());
     PyErr_SetObject(g_invalid_figure_error.ptr(), instance.ptr());
   } catch (const sm::JsonError& e) {
-    set_error(g_json_error, e.what());
+    raise_with_message(g_json_error, e.what());
   } catch (const sm::InvalidArgumentError& e) {
-    set_error(g_invalid_argument_error, e.what());
+    raise_with_message(g_invalid_argument_error, e.what());
   } catch (const sm::IncompatibleFiguresError& e) {
-    set_error(g_incompatible_figures_error, e.what());
+    raise_with_message(g_incompatible_figures_error, e.what());
   } catch (const sm::VerificationError& e) {
-    set_error(g_verification_error, e.what());
+    raise_with_message(g_verification_error, e.what());
   } catch (const sm::InternalError& e) {
-    set_error(g_internal_error, e.what());
+    raise_with_message(g_internal_error, e.what());
   } catch (const sm::Error& e) {
-    set_error(g_stickmorph_error, e.what());
+    raise_with_message(g_stickmorph_error, e.what());
   }
 }
 
