@@ -1,6 +1,14 @@
-"""Fixtures for the add-on tests that run inside Blender (see run_pytest.py)."""
+"""Fixtures for the add-on tests that run inside Blender (see run_pytest.py).
+
+The add-on's module name depends on the Blender: `stick_morph` for a legacy
+add-on (Blender 3.x, 4.0, 4.1), `bl_ext.user_default.stick_morph` for an
+extension (4.2+). Tests get the package module from the `addon` fixture
+(`addon.core`, `addon.__name__` for preferences.addons[...]) or import a
+submodule with addon_import("core"); they never import `stick_morph` by name.
+"""
 
 import glob
+import importlib
 import math
 import os
 import sys
@@ -12,46 +20,71 @@ from mathutils import Matrix
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SANDBOX = os.environ.get("STICKMORPH_BLENDER_SANDBOX")
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+import blender_sandbox  # noqa: E402
+
+# The name the add-on is enabled under in this Blender.
+ADDON_MODULE = blender_sandbox.addon_module_name()
 
 
-def addon_zip():
+def addon_package():
+    """The package to test: $STICKMORPH_ADDON_ZIP, else the newest one in dist/
+    built for this Blender and Python (build_addon.py names them so)."""
     path = os.environ.get("STICKMORPH_ADDON_ZIP")
     if path:
         return path
-    candidates = sorted(glob.glob(os.path.join(ROOT, "dist", "stick_morph-*.zip")), key=os.path.getmtime)
-    if not candidates:
-        pytest.fail("no dist/stick_morph-*.zip: run python3 build_addon.py first")
-    return candidates[-1]
+    try:
+        return blender_sandbox.find_package(os.path.join(ROOT, "dist"))
+    except FileNotFoundError as error:
+        others = sorted(os.path.basename(p) for p in glob.glob(os.path.join(ROOT, "dist", "stick_morph-*.zip")))
+        pytest.fail(f"{error} (dist/ holds: {', '.join(others) or 'nothing'})")
+
+
+def addon_import(submodule=None):
+    """The add-on's package, or one of its submodules ("core"), under the name
+    it is installed as in this Blender."""
+    return importlib.import_module(ADDON_MODULE + (f".{submodule}" if submodule else ""))
+
+
+@pytest.fixture(scope="session")
+def addon_name():
+    """stick_morph (legacy add-on) or bl_ext.user_default.stick_morph (extension)."""
+    return ADDON_MODULE
 
 
 @pytest.fixture(scope="session")
 def addon():
-    """Installs the built zip into the sandboxed user scripts folder and enables it;
-    returns the add-on package (stick_morph)."""
+    """Installs the built package into the sandboxed user folders the way this
+    Blender installs it (legacy add-on or extension) and enables it; returns
+    the add-on's package module."""
     if not SANDBOX:
         pytest.fail("run through tests/blender/run_pytest.py (a sandboxed user config)")
-    scripts = bpy.utils.user_resource("SCRIPTS")
-    assert os.path.realpath(scripts).startswith(os.path.realpath(SANDBOX)), scripts
-    assert "stick_morph" not in sys.modules
-    result = bpy.ops.preferences.addon_install(filepath=addon_zip(), overwrite=True)
-    assert result == {"FINISHED"}
-    result = bpy.ops.preferences.addon_enable(module="stick_morph")
-    assert result == {"FINISHED"}
-    import stick_morph
+    # Every user folder (config, scripts, datafiles, extension repositories)
+    # must be in the sandbox, or installing would write into the real one.
+    blender_sandbox.check_sandboxed()
+    assert ADDON_MODULE not in sys.modules
+    assert not any(m == "stick_morph" or m.startswith("stick_morph.") for m in sys.modules)
+    try:
+        name = blender_sandbox.install_package(addon_package())
+    except RuntimeError as error:
+        pytest.fail(str(error))
+    assert name == ADDON_MODULE
+    package = addon_import()
     # Loaded from the installed copy, with its bundled native module.
-    assert os.path.realpath(stick_morph.__file__).startswith(os.path.realpath(SANDBOX))
-    from stick_morph import core
+    assert os.path.realpath(package.__file__).startswith(os.path.realpath(SANDBOX))
+    core = addon_import("core")
     engine = core.load_engine()
     assert os.path.realpath(engine.__file__).startswith(os.path.realpath(SANDBOX)), engine.__file__
+    assert os.path.dirname(os.path.realpath(engine.__file__)) == os.path.dirname(os.path.realpath(package.__file__))
     assert hasattr(bpy.types, "OBJECT_OT_stick_morph_bake") or hasattr(bpy.ops.object, "stick_morph_bake")
-    return stick_morph
+    return package
 
 
 @pytest.fixture
 def scene(addon):
     """An empty scene (the add-on stays enabled)."""
     bpy.ops.wm.read_homefile(use_empty=True)
-    assert "stick_morph" in bpy.context.preferences.addons
+    assert addon.__name__ in bpy.context.preferences.addons
     return bpy.context.scene
 
 

@@ -2,12 +2,14 @@
 
     blender -b --factory-startup --python-exit-code 1 --python tests/blender/run_pytest.py -- [pytest args]
 
-The tests install the built zip (dist/stick_morph-*.zip, or $STICKMORPH_ADDON_ZIP)
-into Blender's user scripts folder. So that the real user configuration is
-never touched, this script first re-launches Blender with BLENDER_USER_SCRIPTS
-and BLENDER_USER_CONFIG pointing into a temporary folder, and runs pytest
-there. Blender's exit code is pytest's; "no tests collected" (5) counts as a
-failure.
+The tests install the package built for this Blender (the newest
+dist/stick_morph-*-blender<M.m>-cp<XY>-*.zip, or $STICKMORPH_ADDON_ZIP): a
+legacy add-on on Blender < 4.2, an extension in the user_default repository on
+4.2+. So that the real user configuration is never touched, this script first
+re-launches Blender with every user folder (config, scripts, datafiles,
+extensions) in a temporary folder (scripts/blender_sandbox.py), and runs
+pytest there; conftest.py checks that Blender really uses those folders.
+Blender's exit code is pytest's; "no tests collected" (5) counts as a failure.
 """
 
 import os
