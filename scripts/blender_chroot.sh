@@ -32,6 +32,15 @@ PACKAGES=(
   libegl1 libegl-mesa0
   xvfb xauth
 )
+# sid's Blender 5.2 loads its extensions add-on (bl_pkg) through a downloader
+# that imports cattrs and requests, which the Debian package does not depend
+# on: without them the add-on fails to register at every start.
+SID_PACKAGES=(python3-cattr python3-requests)
+
+suite_packages() {
+  printf '%s\n' "${PACKAGES[@]}"
+  if [[ "$1" == sid ]]; then printf '%s\n' "${SID_PACKAGES[@]}"; fi
+}
 
 usage() {
   sed -n '2,8p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//' >&2
@@ -53,7 +62,7 @@ need_root() {
 # The chroot is complete when its marker names exactly the packages above; a
 # run that was interrupted leaves no marker and is resumed, a changed package
 # list installs only what is new.
-marker_text() { printf '%s\n' "${PACKAGES[@]}"; }
+marker_text() { suite_packages "$1"; }
 
 in_chroot_plain() {
   # Package installation needs /proc and /dev but not the repository.
@@ -74,7 +83,7 @@ ensure() {
   # One set-up at a time per suite: parallel test runs may call ensure together.
   exec 9>"$CACHE/$suite.lock"
   flock 9
-  if [[ -f "$dir/.stickmorph-ready" ]] && [[ "$(cat "$dir/.stickmorph-ready")" == "$(marker_text)" ]]; then
+  if [[ -f "$dir/.stickmorph-ready" ]] && [[ "$(cat "$dir/.stickmorph-ready")" == "$(marker_text "$suite")" ]]; then
     return 0
   fi
   if ! command -v debootstrap >/dev/null; then
@@ -93,10 +102,10 @@ ensure() {
   echo "blender_chroot.sh: installing Blender and the build dependencies in $suite"
   in_chroot_plain "$dir" /usr/bin/env DEBIAN_FRONTEND=noninteractive apt-get update </dev/null
   in_chroot_plain "$dir" /usr/bin/env DEBIAN_FRONTEND=noninteractive \
-    apt-get install -y "${PACKAGES[@]}" </dev/null
+    apt-get install -y $(suite_packages "$suite") </dev/null
   in_chroot_plain "$dir" /usr/bin/env apt-get clean </dev/null
   mkdir -p "$dir/stickmorph"
-  marker_text > "$dir/.stickmorph-ready"
+  marker_text "$suite" > "$dir/.stickmorph-ready"
 }
 
 run() {
