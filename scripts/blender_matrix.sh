@@ -11,7 +11,8 @@
 # writes its package (inside the chroot for trixie and sid, with that suite's
 # compiler, pybind11, Eigen and CGAL); the headless suite installs it in a
 # sandboxed user folder and runs every test (scripts/blender_tests.sh); then
-# the GUI test drives Adjust Last Operation in a real window under Xvfb.
+# the GUI test drives Adjust Last Operation in a real window under Xvfb, and
+# the demo's bake and render writes its PNG frames and MP4 (render_smoke.sh).
 # The chroots are made by scripts/blender_chroot.sh when missing and cached
 # outside the repository. Stops at the first failing Blender.
 set -euo pipefail
@@ -43,6 +44,8 @@ for suite in "${suites[@]}"; do
       STICKMORPH_BUILD_DIR="${STICKMORPH_BUILD_DIR:-$PWD/build}" bash scripts/blender_tests.sh
       section "GUI test on the host (Xvfb)"
       STICKMORPH_BUILD_DIR="${STICKMORPH_BUILD_DIR:-$PWD/build}" gui_test env
+      section "Demo render on the host"
+      STICKMORPH_BUILD_DIR="${STICKMORPH_BUILD_DIR:-$PWD/build}" bash scripts/render_smoke.sh
       ;;
     trixie|sid)
       section "Chroot $suite"
@@ -52,6 +55,8 @@ for suite in "${suites[@]}"; do
       "${in_chroot[@]}" bash scripts/blender_tests.sh
       section "GUI test in $suite (Xvfb)"
       gui_test "${in_chroot[@]}"
+      section "Demo render in $suite"
+      "${in_chroot[@]}" bash scripts/render_smoke.sh
       ;;
     *)
       echo "blender_matrix.sh: unknown Blender '$suite' (host, trixie or sid)" >&2

@@ -11,7 +11,29 @@
 # Blender (scripts/render_demo.py: a temporary user config, never the real
 # one) and renders PNG frames and an MP4 into out/monkey_to_player/, next to a
 # filmstrip of our morph against the straight-line morph (Figure 8d).
+#
+#   scripts/demo.sh                   Blender 3.4.1 of the host (Debian 12)
+#   scripts/demo.sh --blender trixie  Blender 4.3.2 in the Debian 13 chroot
+#   scripts/demo.sh --blender sid     Blender 5.2.2 in the Debian sid chroot
+# (the chroots: scripts/blender_chroot.sh, made when missing; docs/BLENDER.md)
 set -euo pipefail
+
+blender_system=host
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --blender) blender_system=${2:-}; shift 2 || { echo "demo.sh: --blender needs host, trixie or sid" >&2; exit 2; } ;;
+    -h|--help) sed -n '2,20p' "$0"; exit 0 ;;
+    *) echo "demo.sh: unknown argument: $1 (usage: scripts/demo.sh [--blender host|trixie|sid])" >&2; exit 2 ;;
+  esac
+done
+case "$blender_system" in
+  host) in_blender_system=() ; addon_build_dir=build ;;
+  trixie|sid)
+    in_blender_system=(bash scripts/blender_chroot.sh run "$blender_system" --)
+    # The chroot's own compiler and Python build the module, in its /var/tmp.
+    addon_build_dir=/var/tmp/stickmorph-build ;;
+  *) echo "demo.sh: --blender must be host, trixie or sid, not '$blender_system'" >&2; exit 2 ;;
+esac
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 section() { printf '\n==== %s ====\n' "$*"; }
@@ -60,18 +82,21 @@ print(f"straight-line morph: frames {linear['invalid_frames']} self-intersect")
 PY
 ls -l out/
 
-section "Blender add-on: build the zip"
-/usr/bin/python3 build_addon.py --build-dir build
-zip=$(ls -t dist/stick_morph-*.zip | head -n 1)
-echo "add-on zip: $zip"
+section "Blender add-on: build the package ($blender_system)"
+if [[ $blender_system != host ]]; then bash scripts/blender_chroot.sh ensure "$blender_system"; fi
+"${in_blender_system[@]}" /usr/bin/python3 build_addon.py --build-dir "$addon_build_dir" | tee out/build_addon.log
+# build_addon.py names the package it wrote on its last line ("wrote dist/...").
+zip=$(sed -n 's/^wrote \(dist\/stick_morph-[^ ]*\.zip\).*$/\1/p' out/build_addon.log | tail -n 1)
+[[ -n "$zip" && -f "$zip" ]] || { echo "demo: build_addon.py wrote no package" >&2; exit 1; }
+echo "add-on package: $zip"
 
-section "Blender: bake and render monkey -> basketball player (Figure 8a)"
+section "Blender ($blender_system): bake and render monkey -> basketball player (Figure 8a)"
 sample=monkey_to_player
 mkdir -p out/$sample
 started=$SECONDS
 echo "\$ blender -b --factory-startup --python-exit-code 1 --python scripts/render_demo.py -- --sample blend_samples/$sample.blend --zip $zip --out out/$sample --frames 60 --resolution 960 540"
 # Blender prints a line or two per rendered frame; those are left out here.
-blender -b --factory-startup --python-exit-code 1 --python scripts/render_demo.py -- \
+"${in_blender_system[@]}" blender -b --factory-startup --python-exit-code 1 --python scripts/render_demo.py -- \
   --sample blend_samples/$sample.blend --zip "$zip" --out out/$sample --frames 60 --resolution 960 540 \
   | grep --line-buffered -v -E '^[[:space:]]*(Fra:|Saved: |Append frame|Time: |$)'
 echo "bake and render: $((SECONDS - started)) s"

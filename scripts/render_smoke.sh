@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# The demo's bake and render, small: builds the package for the Blender on
+# PATH, bakes monkey -> basketball player with scripts/render_demo.py (12
+# frames at 320x180) and checks that the PNG frames and the MP4 were written.
+# scripts/blender_matrix.sh runs it in every tested Blender, so the README
+# demo's render is known to work in 3.4, 4.3 and 5.2 alike.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+BUILD_DIR="${STICKMORPH_BUILD_DIR:-build-addon}"
+out=$(mktemp -d "${TMPDIR:-/tmp}/stickmorph-render-smoke.XXXXXX")
+trap 'rm -rf "$out"' EXIT
+
+/usr/bin/python3 build_addon.py --build-dir "$BUILD_DIR" > "$out/build.log"
+package=$(sed -n 's/^wrote \(dist\/stick_morph-[^ ]*\.zip\).*$/\1/p' "$out/build.log" | tail -n 1)
+if [[ -z "$package" || ! -f "$package" ]]; then
+  cat "$out/build.log" >&2
+  echo "render_smoke.sh: build_addon.py wrote no package" >&2
+  exit 1
+fi
+frames=12
+if ! blender -b --factory-startup --python-exit-code 1 --python scripts/render_demo.py -- \
+    --sample blend_samples/monkey_to_player.blend --zip "$package" --out "$out/render" \
+    --frames "$frames" --resolution 320 180 > "$out/render.log" 2>&1; then
+  tail -n 40 "$out/render.log" >&2
+  echo "render_smoke.sh: the demo's bake and render failed" >&2
+  exit 1
+fi
+pngs=$(find "$out/render/frames" -name 'frame_*.png' | wc -l)
+mp4="$out/render/morph.mp4"
+[[ "$pngs" -eq "$frames" ]] || { echo "render_smoke.sh: $pngs PNG frames, expected $frames" >&2; exit 1; }
+[[ -s "$mp4" ]] || { echo "render_smoke.sh: no morph.mp4 was written" >&2; exit 1; }
+# An MP4 file starts with an ftyp box: bytes 4..7 spell "ftyp".
+[[ "$(head -c 8 "$mp4" | tail -c 4)" == "ftyp" ]] || { echo "render_smoke.sh: morph.mp4 is not an MP4 file" >&2; exit 1; }
+echo "render smoke: $package baked and rendered $pngs frames and a $(stat -c %s "$mp4")-byte MP4 in $(blender --version 2>/dev/null | head -n 1)"
