@@ -317,8 +317,14 @@ def extension_version_range(blender: dict) -> tuple[str, str]:
 def manifest_text(blender: dict) -> str:
     """The repository's manifest with this build's version range and platform,
     and without the [build] table (it only steers `extension build`)."""
-    text = (PACKAGE / MANIFEST).read_text()
-    text = re.split(r"^\[build\]\s*$", text, maxsplit=1, flags=re.MULTILINE)[0].rstrip() + "\n"
+    template = re.split(r"^\[build\]\s*$", (PACKAGE / MANIFEST).read_text(), maxsplit=1, flags=re.MULTILINE)[0]
+    # The template's comments are about the template; the package's manifest
+    # says what it was written for instead.
+    lines = [line for line in template.splitlines() if not line.startswith("#")]
+    text = re.sub(r"\n{3,}", "\n\n", "\n".join(lines)).strip() + "\n"
+    text = (f"# Written by build_addon.py for Blender {blender['version_string'].split()[0]} "
+            f"(Python {blender['python'][0]}.{blender['python'][1]}); the bundled module\n"
+            f"# imports only in a Blender embedding that Python (docs/BLENDER.md).\n" + text)
     low, high = extension_version_range(blender)
     text, count = re.subn(r'^blender_version_min = ".*"$',
                           f'blender_version_min = "{low}"\nblender_version_max = "{high}"', text,
@@ -376,7 +382,7 @@ def validate_extension(blender_path: str, archive: Path):
     text = (out.stdout + out.stderr).strip()
     if out.returncode != 0:
         fail(f"`blender --command extension validate` refused {archive}:\n{text}")
-    print(f"extension validate: {text.splitlines()[-1] if text else 'ok'}")
+    print(f"`blender --command extension validate` accepts {archive.name}: {text}")
 
 
 LEGACY_INSTALL = """
