@@ -104,6 +104,6 @@ def test_core_refuses_counts_the_properties_clamp(addon, arguments, fragment):
     # Blender clamps the operator's frame_count and enclosure_sides to their
     # hard limits, so out-of-range values reach core only from scripts that
     # call it directly; it refuses them before any engine work.
-    from stick_morph import core
+    core = addon.core
     with pytest.raises(core.StickMorphError, match=fragment):
         core.compute_morph(None, **arguments)

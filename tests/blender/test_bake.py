@@ -174,8 +174,8 @@ def test_explicit_names_and_options(scene, addon):
     assert settings.last_vertices == 5
 
 
-def test_preferences_give_the_defaults(scene, addon):
-    prefs = bpy.context.preferences.addons["stick_morph"].preferences
+def test_preferences_give_the_defaults(scene, addon, addon_name):
+    prefs = bpy.context.preferences.addons[addon_name].preferences
     saved = prefs.frame_count
     prefs.frame_count = 4
     try:

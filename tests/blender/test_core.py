@@ -70,11 +70,11 @@ def test_edge_sets_and_easing(addon):
     assert np.array_equal(core.ease_sample_indices(7, "LINEAR"), np.arange(7))
 
 
-def test_registration_panel_and_defaults(scene, addon):
+def test_registration_panel_and_defaults(scene, addon, addon_name):
     import bpy
     assert hasattr(bpy.types, "VIEW3D_PT_stick_morph")
     assert bpy.types.VIEW3D_PT_stick_morph.bl_category == "Stick Morph"
-    prefs = bpy.context.preferences.addons["stick_morph"].preferences
+    prefs = bpy.context.preferences.addons[addon_name].preferences
     settings = scene.stick_morph
     saved = prefs.enclosure_sides
     prefs.enclosure_sides = 9

@@ -12,8 +12,9 @@ from conftest import make_pair, world_coords
 
 CHECK_NO_ADDON = """
 import sys, bpy
-assert "stick_morph" not in bpy.context.preferences.addons, "add-on enabled"
-assert not any(m == "stick_morph" or m.startswith("stick_morph.") for m in sys.modules), "add-on loaded"
+# The legacy add-on is stick_morph, the extension bl_ext.<repository>.stick_morph.
+assert not [a.module for a in bpy.context.preferences.addons if a.module.split(".")[-1] == "stick_morph"], "add-on enabled"
+assert not any("stick_morph" in m.split(".") for m in sys.modules), "add-on loaded"
 for key in bpy.data.shape_keys:
     assert key.animation_data is None or len(key.animation_data.drivers) == 0
 for name in dir(bpy.app.handlers):

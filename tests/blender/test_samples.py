@@ -27,11 +27,11 @@ def test_every_sample_is_tested():
     assert found == set(SAMPLES), f"blend_samples/ holds {sorted(found)}; update SAMPLES"
 
 
-def open_sample(name):
+def open_sample(name, addon_name):
     path = os.path.join(SAMPLES_DIR, f"{name}.blend")
     assert os.path.isfile(path), path
     assert bpy.ops.wm.open_mainfile(filepath=path, load_ui=False) == {"FINISHED"}
-    assert "stick_morph" in bpy.context.preferences.addons
+    assert addon_name in bpy.context.preferences.addons
     source = bpy.data.objects[f"{name}_source"]
     target = bpy.data.objects[f"{name}_target"]
     return bpy.context.scene, source, target
@@ -43,8 +43,8 @@ def figure_json(name, role):
 
 
 @pytest.mark.parametrize("name", SAMPLES)
-def test_sample_bakes_to_the_engine_morph(addon, name):
-    scene, source, target = open_sample(name)
+def test_sample_bakes_to_the_engine_morph(addon, addon_name, name):
+    scene, source, target = open_sample(name, addon_name)
     edges = sorted(tuple(sorted(e.vertices)) for e in source.data.edges)
     # The meshes are the sample's figures (single precision), in the JSON's order.
     for obj, role in ((source, "source"), (target, "target")):
