@@ -7,6 +7,11 @@ Gotsman (2001), computed by the bundled native `stickmorph` module.
 
 This file imports no bpy-dependent module at import time, so `core` can be
 imported outside Blender (tests, tools).
+
+Registration never fails for a missing numpy or a native module built for
+another Python: register() only checks them (dependencies.check, which
+catches ImportError and OSError); the sidebar panel and the preferences then
+say what is missing and how to rebuild, and a bake reports it as an ERROR.
 """
 
 bl_info = {
@@ -29,11 +34,16 @@ def _menu(self, context):
 def register():
     global _modules
     import bpy
+    # None of these import numpy or the native module at import time.
     from . import operators, preferences, ui
     _modules = (preferences, operators, ui)
     for module in _modules:
         module.register()
     bpy.types.VIEW3D_MT_object.append(_menu)
+    status = operators.dependency_status(force=True)
+    if not status.ok:
+        # The console too: enabling from a script shows no panel.
+        print(f"Stick Morph: {status.message()}")
 
 
 def unregister():

@@ -47,14 +47,45 @@ _INTERPOLATION = {"CONSTANT": 0, "LINEAR": 1}
 
 # ------------------------------------------------------------------ read ----
 
-def mesh_world_data(obj):
+def evaluated_depsgraph(context):
+    """The evaluated depsgraph, brought up to date.
+
+    Object.matrix_world of an original object is a copy the depsgraph writes
+    back after evaluating; since Blender 4.x it is runtime data that undo
+    does not restore. Adjust Last Operation undoes the bake and calls execute
+    again before anything re-evaluates, so the original objects' matrix_world
+    then reads the identity (measured in 4.3 and 5.2: the redone result sat at
+    the origin). evaluated_depsgraph_get() evaluates what is tagged first,
+    and the evaluated object carries the matrix that is shown."""
+    return context.evaluated_depsgraph_get()
+
+
+def world_matrix(obj, depsgraph=None):
+    """(4, 4) float64 world matrix of obj as evaluated (parents, constraints,
+    drivers), from the evaluated copy when a depsgraph is given; without one,
+    or if the object is not in it, from matrix_basis and the parent chain."""
+    if depsgraph is not None:
+        try:
+            return np.array(obj.evaluated_get(depsgraph).matrix_world, dtype=np.float64)
+        except (ReferenceError, RuntimeError):
+            pass  # not in the view layer's depsgraph: compose it below
+    # Object parenting only (no bone or vertex parents, no constraints): the
+    # depsgraph is the one that knows those.
+    matrix = np.array(obj.matrix_basis, dtype=np.float64)
+    if obj.parent is not None:
+        matrix = world_matrix(obj.parent) @ np.array(obj.matrix_parent_inverse, dtype=np.float64) @ matrix
+    return matrix
+
+
+def mesh_world_data(obj, depsgraph=None):
     """(V, 3) float64 world coordinates, (E, 2) int64 edges and the face count
-    of a mesh object's own mesh (no modifiers, no shape keys: the basis)."""
+    of a mesh object's own mesh (no modifiers, no shape keys: the basis),
+    placed by the object's evaluated world matrix (world_matrix)."""
     mesh = obj.data
     co = np.empty(len(mesh.vertices) * 3, dtype=np.float32)
     mesh.vertices.foreach_get("co", co)
     local = co.reshape(-1, 3).astype(np.float64)
-    matrix = np.array(obj.matrix_world, dtype=np.float64)
+    matrix = world_matrix(obj, depsgraph)
     # A non-finite coordinate stays non-finite here and is reported, naming
     # the object and the vertex, by core's validation; numpy need not warn.
     with np.errstate(invalid="ignore", over="ignore"):
@@ -68,9 +99,11 @@ def mesh_world_data(obj):
 
 def find_fcurve(anim_data, data_path):
     """The F-curve of data_path in the action of anim_data, for legacy actions
-    (up to 4.3) and slotted actions (4.4+, through the assigned slot's
-    channelbag)."""
+    (up to 4.3: Action.fcurves) and slotted actions (4.4+, through the
+    assigned slot's channelbag; 5.0 removed Action.fcurves). None if absent."""
     action = anim_data.action
+    if action is None:
+        return None
     slot = getattr(anim_data, "action_slot", None)
     if slot is not None and hasattr(action, "layers"):
         for layer in action.layers:
@@ -80,7 +113,8 @@ def find_fcurve(anim_data, data_path):
                     fcurve = channelbag.fcurves.find(data_path)
                     if fcurve is not None:
                         return fcurve
-    return action.fcurves.find(data_path)
+    legacy = getattr(action, "fcurves", None)  # gone in 5.0
+    return legacy.find(data_path) if legacy is not None else None
 
 
 def _fill_fcurve(fcurve, frames, values, interpolation):
@@ -223,11 +257,49 @@ def tube_node_group():
     return group, True
 
 
+def _modifier_input(modifier, identifier):
+    """The 5.x holder of a Geometry Nodes modifier input: the item of
+    modifier.properties.inputs whose .value is the input's value; None in
+    3.x/4.x, where the value is an ID property, modifier[identifier]."""
+    properties = getattr(modifier, "properties", None)
+    inputs = getattr(properties, "inputs", None) if properties is not None else None
+    if inputs is None:
+        return None
+    item = getattr(inputs, identifier, None)
+    if item is None:
+        try:
+            item = inputs[identifier]
+        except (KeyError, TypeError, IndexError):
+            raise KeyError(f"the modifier '{modifier.name}' has no input {identifier}") from None
+    return item
+
+
+def set_modifier_input(modifier, identifier, value):
+    """Sets a Geometry Nodes modifier input (5.x: properties.inputs.<id>.value;
+    before: the ID property modifier[identifier], refused by 5.x with
+    "id properties not supported for this type")."""
+    item = _modifier_input(modifier, identifier)
+    if item is None:
+        modifier[identifier] = value
+    else:
+        item.value = value
+
+
+def get_modifier_input(modifier, identifier):
+    """The value set_modifier_input set."""
+    item = _modifier_input(modifier, identifier)
+    return modifier[identifier] if item is None else item.value
+
+
+def radius_identifier(group):
+    return _group_input_identifier(group, "Radius")
+
+
 def add_tubes(obj, radius):
     group, created = tube_node_group()
     modifier = obj.modifiers.new("Stick Morph Tubes", "NODES")
     modifier.node_group = group
-    modifier[_group_input_identifier(group, "Radius")] = float(radius)
+    set_modifier_input(modifier, radius_identifier(group), float(radius))
     return group, created
 
 
@@ -270,17 +342,13 @@ def previous_results(source_name, target_name):
             and obj.get(SOURCE) == source_name and obj.get(TARGET) == target_name]
 
 
-def result_name(source_name, target_name):
-    return f"{source_name}_to_{target_name}"
-
-
 def build_result(context, source, target, prepared, morph, *, frame_start, renderable,
                  tube_radius_factor, show_triangulation, shape_keys="ABSOLUTE", report_progress=None):
     """Creates the result (and helper) objects; returns (result object, Created).
     On failure everything created is removed and the exception re-raised."""
     created = Created()
     collection = context.collection or context.scene.collection
-    name = result_name(source.name, target.name)
+    name = core.result_name(source.name, target.name)
     origin = prepared.plane.origin
     try:
         frames_local = morph.frames_world - origin

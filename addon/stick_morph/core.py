@@ -26,10 +26,18 @@ that lie in parallel planes, e.g. side by side at different depths.
 from __future__ import annotations
 
 import math
+import os
+import re
 import time
 from dataclasses import dataclass, field
 
 import numpy as np
+
+from . import dependencies
+# The limits and the error type live in common.py, which imports without
+# numpy; they are part of core's interface too.
+from .common import (DEFAULT_PLANARITY_TOLERANCE, MAX_ENCLOSURE_SIDES, MAX_ENGINE_FRAMES,  # noqa: F401
+                     StickMorphError)
 
 PLANES = ("AUTO", "XY", "XZ", "YZ")
 EASINGS = ("LINEAR", "EASE_IN_OUT")
@@ -45,23 +53,10 @@ _AXIS_PLANES = {
     "YZ": ((0.0, 1.0, 0.0), (0.0, 0.0, 1.0)),
 }
 
-# A figure deviating from its plane by more than this fraction of the size of
-# both figures (the diagonal of their common bounding box) is not planar.
-DEFAULT_PLANARITY_TOLERANCE = 1e-4
-
 # With easing, the frames are picked from a finer uniform morph of this many
 # samples per output frame interval (see ease_sample_indices).
 EASE_OVERSAMPLING = 8
 
-MAX_ENGINE_FRAMES = 100000
-
-# The engine's bound on the enclosure's sides (native/stickmorph/argument_limits.h):
-# the annulus costs grow quadratically with them, so more is a hang.
-MAX_ENCLOSURE_SIDES = 1000
-
-
-class StickMorphError(Exception):
-    """A problem with the user's input, reported as an ERROR; message is for the user."""
 
 
 @dataclass
@@ -108,20 +103,17 @@ class MorphResult:
 
 # ---------------------------------------------------------------- engine ----
 
-def load_engine():
+def load_engine(blender: str | None = None):
     """The native `stickmorph` module: the copy shipped inside this package,
-    else one on sys.path (a development build)."""
+    else one on sys.path (a development build). Raises StickMorphError saying
+    which Python the module was built for and how to rebuild it."""
     try:
-        from . import stickmorph as engine  # type: ignore[attr-defined]
-    except ImportError:
-        try:
-            import stickmorph as engine  # type: ignore[no-redef]
-        except ImportError as e:
-            raise StickMorphError(
-                "the native stickmorph module is missing from the add-on; rebuild the "
-                "add-on with build_addon.py for this Blender's Python "
-                f"({e})") from e
-    return engine
+        return dependencies.import_engine(__package__)
+    except (ImportError, OSError):
+        status = dependencies.check(os.path.dirname(os.path.abspath(__file__)), __package__, blender)
+        if status.engine_error is None:  # loaded on the second try (a transient failure)
+            return dependencies.import_engine(__package__)
+        raise StickMorphError(status.message()) from None
 
 
 # ----------------------------------------------------------------- plane ----
@@ -436,3 +428,61 @@ def triangulation_world(triangulation: dict, prepared: PreparedPair) -> tuple[np
 def tube_radius(size: float, factor: float) -> float:
     """Radius of the renderable tubes: a fraction of the figures' size."""
     return max(size * factor, 1e-6) if math.isfinite(size) and size > 0 else factor
+
+
+# ---------------------------------------------------------- result name ----
+
+# Blender's object names hold 63 bytes (up to 4.x); the triangulation helper
+# appends "_triangulation" (14) to the result's name.
+MAX_RESULT_NAME_BYTES = 40
+RESULT_SUFFIX = "morph"
+_SEPARATORS = "_-. "
+
+
+def _tokens(name: str) -> list[str]:
+    """name split after each separator, keeping it: "a_b.c" -> ["a_", "b.", "c"]."""
+    return re.findall(r"[^_\-. ]*[_\-. ]+|[^_\-. ]+$", name)
+
+
+def _clip(text: str, max_bytes: int) -> str:
+    """text cut to at most max_bytes of UTF-8 without splitting a character."""
+    data = text.encode("utf-8")
+    if len(data) <= max_bytes:
+        return text
+    return data[:max_bytes].decode("utf-8", errors="ignore")
+
+
+def result_name(source_name: str, target_name: str, max_bytes: int = MAX_RESULT_NAME_BYTES) -> str:
+    """A short name for the result of morphing source_name into target_name.
+
+    Names that share whole leading or trailing words (split at _ - . and
+    spaces) keep what they share and end in "_morph":
+    monkey_to_player_source + monkey_to_player_target -> monkey_to_player_morph,
+    Cube.001 + Cube.002 -> Cube_morph, source_arm + target_arm -> arm_morph.
+    Otherwise it is <source>_to_<target>, each side clipped so that the
+    whole stays within max_bytes (UTF-8, so it fits Blender's name field with
+    the helper's suffix); only ASCII is added to the given names.
+    """
+    a, b = _tokens(source_name), _tokens(target_name)
+    prefix = []
+    for x, y in zip(a, b):
+        if x.rstrip(_SEPARATORS) != y.rstrip(_SEPARATORS):
+            break
+        prefix.append(x)
+    rest_a, rest_b = a[len(prefix):], b[len(prefix):]
+    suffix = []
+    for x, y in zip(reversed(rest_a), reversed(rest_b)):
+        if x.rstrip(_SEPARATORS) != y.rstrip(_SEPARATORS):
+            break
+        suffix.insert(0, x)
+    common = "".join(prefix) + "".join(suffix)
+    common = common.strip(_SEPARATORS)
+    # A shared word that is only a digit run or a single character ("1_a",
+    # "1_b") says nothing about the pair.
+    if len(common) >= 2 and not common.isdigit():
+        stem = re.sub(r"[_\-. ]+", "_", common)
+        return _clip(stem, max_bytes - len(RESULT_SUFFIX) - 1).rstrip(_SEPARATORS) + "_" + RESULT_SUFFIX
+    half = (max_bytes - len("_to_")) // 2
+    left = _clip(source_name, max(half, max_bytes - len("_to_") - len(target_name.encode("utf-8"))))
+    right = _clip(target_name, max_bytes - len("_to_") - len(left.encode("utf-8")))
+    return f"{left}_to_{right}"

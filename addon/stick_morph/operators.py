@@ -4,46 +4,147 @@ All checks (selection, faces, vertex counts, edge sets, planarity, the
 engine's validation and compatibility) and the morph itself run before any
 data is created, so that an error leaves the scene exactly as it was;
 building the result is wrapped so that a failure removes what it created.
+
+execute depends only on the operator's properties and the file, never on
+state kept from an earlier run, because Adjust Last Operation (and redo)
+undoes the last run and calls execute again on the restored file.
+
+numpy and the native module are imported only inside execute, after
+dependencies.check() found them: the add-on registers without them, and the
+bake reports what is missing as an ERROR instead of failing with a raw
+ImportError.
 """
 
+import os
 import time
 
 import bpy
-from bpy.props import BoolProperty, IntProperty, StringProperty
+from bpy.props import IntProperty, StringProperty
 
-from . import baking, core
+from . import dependencies
+from .common import StickMorphError
 from .preferences import OPTION_NAMES, addon_preferences, option_properties
 
+PACKAGE_DIR = os.path.dirname(os.path.abspath(__file__))
 
-def _resolve(context, source_name, target_name):
-    """The source and target objects. Raises core.StickMorphError."""
+# The status of the last dependency check (set by register(), refreshed by a
+# bake that finds it failing); the panel shows it.
+_status = None
+
+
+def dependency_status(refresh=False, force=False):
+    """dependencies.check() of this package, cached: importing a missing
+    module again on every redraw of the panel would cost a file system scan.
+    refresh: check again if the last check failed; force: check again."""
+    global _status
+    if force or _status is None or (refresh and not _status.ok):
+        _status = dependencies.check(PACKAGE_DIR, __package__, bpy.app.binary_path or None)
+    return _status
+
+
+def resolve_pair(context, source_name, target_name):
+    """The source and target objects, from the names or else the selection
+    (the target is the active object). The panel's preview calls this too, so
+    it shows exactly what a bake would use. Raises StickMorphError."""
     def named(name, role):
         obj = bpy.data.objects.get(name)
         if obj is None:
-            raise core.StickMorphError(f"there is no object named '{name}' ({role})")
+            raise StickMorphError(f"there is no object named '{name}' ({role})")
         return obj
 
     if source_name or target_name:
         if not (source_name and target_name):
-            raise core.StickMorphError("give both source and target, or neither (then the "
-                                       "selection is used)")
+            raise StickMorphError("give both source and target, or neither (then the "
+                                  "selection is used)")
         source, target = named(source_name, "source"), named(target_name, "target")
     else:
         selected = list(context.selected_objects)
         active = context.active_object
         if len(selected) != 2 or active not in selected:
-            raise core.StickMorphError(
+            raise StickMorphError(
                 f"select two mesh objects, the target last (active); {len(selected)} selected"
                 + ("" if active in selected or not selected else ", none of them active"))
         target = active
         source = selected[0] if selected[1] == active else selected[1]
     for obj, role in ((source, "source"), (target, "target")):
         if obj.type != "MESH":
-            raise core.StickMorphError(
+            raise StickMorphError(
                 f"not two mesh objects: the {role} '{obj.name}' is a {obj.type.lower()}, not a mesh")
     if source == target:
-        raise core.StickMorphError(f"source and target are the same object '{source.name}'")
+        raise StickMorphError(f"source and target are the same object '{source.name}'")
     return source, target
+
+
+class Progress:
+    """The window manager's progress indicator, one call per stage.
+
+    Only with a window: in background mode (tests, render_demo.py) there is
+    no cursor or status bar to show it, and 3.x prints nothing useful."""
+
+    def __init__(self, context):
+        wm = context.window_manager
+        self.wm = wm if wm is not None and context.window is not None and not bpy.app.background else None
+        self.stages = []  # (name, milliseconds)
+        self._started = time.perf_counter()
+
+    def __enter__(self):
+        if self.wm is not None:
+            self.wm.progress_begin(0, 100)
+        return self
+
+    def update(self, percent):
+        if self.wm is not None:
+            self.wm.progress_update(percent)
+
+    def stage(self, name, percent):
+        """Ends the stage `name` (timed from the previous one) at `percent`."""
+        now = time.perf_counter()
+        self.stages.append((name, (now - self._started) * 1000.0))
+        self._started = now
+        self.update(percent)
+
+    def __exit__(self, *exc):
+        if self.wm is not None:
+            self.wm.progress_end()
+        return False
+
+    def summary(self):
+        return ", ".join(f"{name} {ms:.0f} ms" for name, ms in self.stages)
+
+
+# How long the result stays in the status bar (show_in_status_bar).
+STATUS_SECONDS = 8.0
+
+
+def show_in_status_bar(context, text):
+    """Shows text in the status bar for STATUS_SECONDS.
+
+    Blender 3.4 shows an operator's INFO report in the status bar only when
+    its report timer has a window: WM_report_banner_show() attaches it to
+    wm->winactive, which is not set in every session (so the report appeared
+    only in the Info editor, measured under Xvfb and reported by a user).
+    Later versions fall back to the first window. The workspace's status text
+    is drawn without any timer, so 3.x uses it; it is cleared by an app timer
+    (Blender's own modal operators clear theirs the same way, on exit)."""
+    if bpy.app.version >= STATUS_BANNER_FIXED or bpy.app.background:
+        return
+    workspace = getattr(context, "workspace", None)
+    if workspace is None:
+        return
+    workspace.status_text_set(text)
+    name = workspace.name
+
+    def clear():
+        space = bpy.data.workspaces.get(name)
+        if space is not None:
+            space.status_text_set(None)
+        return None
+
+    bpy.app.timers.register(clear, first_interval=STATUS_SECONDS)
+
+
+# The first version whose report banner finds a window when none is active.
+STATUS_BANNER_FIXED = (4, 0, 0)
 
 
 class STICKMORPH_OT_bake(bpy.types.Operator):
@@ -53,9 +154,15 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
     bl_options = {"REGISTER", "UNDO"}
 
     __annotations__ = {
-        "source": StringProperty(name="Source", description="Source object name (empty: the selected non-active mesh)"),
-        "target": StringProperty(name="Target", description="Target object name (empty: the active object)"),
-        "frame_start": IntProperty(name="Start Frame", description="Frame showing the source", default=1),
+        # SKIP_SAVE: a later call from the menu must use its own selection,
+        # not the names a previous bake resolved (redo keeps them: it re-runs
+        # this operator's own properties, not the remembered ones).
+        "source": StringProperty(name="Source", options={"SKIP_SAVE"},
+                                 description="Source object name (empty: the selected non-active mesh)"),
+        "target": StringProperty(name="Target", options={"SKIP_SAVE"},
+                                 description="Target object name (empty: the active object)"),
+        "frame_start": IntProperty(name="Start", description="Frame showing the source", default=1,
+                                   options=set()),
         **option_properties(),
     }
 
@@ -69,6 +176,10 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
             return False
         return True
 
+    def draw(self, context):
+        from . import ui
+        ui.draw_operator(self.layout, self)
+
     def _apply_preferences(self, context):
         prefs = addon_preferences(context)
         if prefs is None:
@@ -78,44 +189,51 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
                 setattr(self, name, getattr(prefs, name))
 
     def execute(self, context):
+        status = dependency_status(refresh=True)
+        if not status.ok:
+            self.report({"ERROR"}, f"Stick Morph: {status.message()}")
+            return {"CANCELLED"}
         self._apply_preferences(context)
-        wm = context.window_manager
-        wm.progress_begin(0, 100)
         try:
-            return self._bake(context, wm)
-        except core.StickMorphError as error:
+            with Progress(context) as progress:
+                return self._bake(context, progress)
+        except StickMorphError as error:
             self.report({"ERROR"}, f"Stick Morph: {error}")
             return {"CANCELLED"}
-        finally:
-            wm.progress_end()
 
-    def _bake(self, context, wm):
+    def _bake(self, context, progress):
+        from . import baking, core
+
         started = time.perf_counter()
-        source, target = _resolve(context, self.source.strip(), self.target.strip())
-        source_world, source_edges, source_faces = baking.mesh_world_data(source)
-        target_world, target_edges, target_faces = baking.mesh_world_data(target)
+        source, target = resolve_pair(context, self.source.strip(), self.target.strip())
+        # Redo re-runs with these names even if the selection changed meanwhile.
+        self.source, self.target = source.name, target.name
+        depsgraph = baking.evaluated_depsgraph(context)
+        source_world, source_edges, source_faces = baking.mesh_world_data(source, depsgraph)
+        target_world, target_edges, target_faces = baking.mesh_world_data(target, depsgraph)
+        progress.stage("read", 5)
         prepared = core.prepare_pair(source_world, source_edges, source_faces, source.name,
                                      target_world, target_edges, target_faces, target.name,
                                      plane=self.plane, planarity_tolerance=self.planarity_tolerance)
         core.check_pair(prepared, source.name, target.name)
-        wm.progress_update(10)
+        progress.stage("check", 15)
         morph = core.compute_morph(prepared, self.frame_count, steiner=self.steiner, weights=self.weights,
                                    enclosure_sides=self.enclosure_sides, easing=self.easing,
                                    source_name=source.name, target_name=target.name)
-        wm.progress_update(50)
+        progress.stage("morph", 60)
         previous = baking.previous_results(source.name, target.name)
         count = self.frame_count
 
-        def progress(k):
-            wm.progress_update(50 + int(45 * k / max(count, 1)))
+        def frame_done(k):
+            progress.update(60 + int(35 * k / max(count, 1)))
 
         try:
             result, created = baking.build_result(
                 context, source, target, prepared, morph, frame_start=self.frame_start,
                 renderable=self.renderable, tube_radius_factor=self.tube_radius,
-                show_triangulation=self.show_triangulation, report_progress=progress)
+                show_triangulation=self.show_triangulation, report_progress=frame_done)
         except Exception as error:  # build_result removed what it made
-            raise core.StickMorphError(f"building the result failed: {error}") from error
+            raise StickMorphError(f"building the result failed: {error}") from error
         for obj in previous:
             baking.remove_result_object(obj)
         # With the previous result gone, the new one takes the plain names.
@@ -127,6 +245,7 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
             context.scene.frame_start = self.frame_start
             context.scene.frame_end = self.frame_start + count - 1
         baking.select_only(context, result)
+        progress.stage("build", 100)
         milliseconds = (time.perf_counter() - started) * 1000.0
         steiner = int(morph.stats.get("steiner_vertices", 0))
         settings = getattr(context.scene, "stick_morph", None)
@@ -136,8 +255,10 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
             settings.last_steiner = steiner
             settings.last_frames = count
             settings.last_milliseconds = milliseconds
-        self.report({"INFO"}, f"Stick Morph: '{result.name}': {len(prepared.source_xy)} vertices, "
-                              f"{steiner} Steiner vertices, {count} frames, {milliseconds:.0f} ms")
+        text = (f"Stick Morph: '{result.name}': {len(prepared.source_xy)} vertices, "
+                f"{steiner} Steiner vertices, {count} frames, {milliseconds:.0f} ms")
+        self.report({"INFO"}, f"{text} ({progress.summary()})")
+        show_in_status_bar(context, text)
         return {"FINISHED"}
 
 

@@ -2,12 +2,18 @@
 
 The option properties are defined once here (option_properties) and shared by
 the preferences, the operator and the sidebar's per-scene settings.
+
+Every property is defined with options=set(), i.e. not ANIMATABLE: these are
+settings, not animation channels, and an animatable property gets a keyframe
+dot (and an "Insert Keyframe" entry) next to it in every property-split
+layout. Names are short enough for the sidebar's label column at its default
+width in 3.4 (ui.py); the descriptions say the rest.
 """
 
 import bpy
 from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty, PointerProperty, StringProperty
 
-from . import core
+from . import common
 
 # The options copied from the preferences into an operator call (when the
 # caller did not set them) and into the scene settings (Load Defaults).
@@ -21,52 +27,52 @@ def option_properties():
     return {
         "frame_count": IntProperty(
             name="Frames", description="Number of frames of the morph, source and target included",
-            default=50, min=2, max=core.MAX_ENGINE_FRAMES, soft_max=1000),
+            default=50, options=set(), min=2, max=common.MAX_ENGINE_FRAMES, soft_max=1000),
         "steiner": EnumProperty(
             name="Steiner", description="How the compatible triangulation places Steiner vertices",
             items=(("improved", "Improved", "Fewest Steiner vertices (section 4.2 and further)"),
                    ("sg2001", "SG2001", "The reduced spiderweb of Surazhsky & Gotsman 2001"),
                    ("aronov", "Aronov", "The universal spiderweb of Aronov, Seidel & Souvaine")),
-            default="improved"),
+            default="improved", options=set()),
         "weights": EnumProperty(
             name="Weights", description="Convex-combination weights of the Floater-Gotsman morph",
             items=(("mvc", "Mean Value", "Mean value coordinates"),
                    ("uniform", "Uniform", "Uniform (Tutte) weights"),
                    ("floater", "Floater", "Floater's shape-preserving weights")),
-            default="mvc"),
+            default="mvc", options=set()),
         "enclosure_sides": IntProperty(
             name="Enclosure Sides", description="Sides of the regular polygon enclosing both figures",
-            default=6, min=3, max=core.MAX_ENCLOSURE_SIDES, soft_max=64),
+            default=6, options=set(), min=3, max=common.MAX_ENCLOSURE_SIDES, soft_max=64),
         "plane": EnumProperty(
             name="Plane", description="The plane the figures are drawn in",
             items=(("AUTO", "Auto", "The best-fit plane of both meshes"),
                    ("XY", "XY", "The XY plane (seen from above)"),
                    ("XZ", "XZ", "The XZ plane (seen from the front)"),
                    ("YZ", "YZ", "The YZ plane (seen from the right)")),
-            default="AUTO"),
+            default="AUTO", options=set()),
         "easing": EnumProperty(
             name="Easing", description="Time remap of the morph",
             items=(("LINEAR", "Linear", "Constant speed"),
                    ("EASE_IN_OUT", "Ease In-Out", "Slow at the start and the end (smoothstep)")),
-            default="LINEAR"),
+            default="LINEAR", options=set()),
         "renderable": BoolProperty(
             name="Renderable", description="Give the edges geometry (Geometry Nodes tubes) so that they render",
-            default=True),
+            default=True, options=set()),
         "tube_radius": FloatProperty(
             name="Tube Radius", description="Tube radius as a fraction of the figures' size",
-            default=0.01, min=1e-5, max=1.0, soft_max=0.1, precision=4),
+            default=0.01, options=set(), min=1e-5, max=1.0, soft_max=0.1, precision=4),
         "show_triangulation": BoolProperty(
             name="Show Triangulation",
             description="Add a wireframe helper object with the compatible triangulation "
                         "(source shape, with a Target shape key)",
-            default=False),
+            default=False, options=set()),
         "planarity_tolerance": FloatProperty(
             name="Planarity Tolerance",
             description="Largest allowed distance of a vertex from the plane, as a fraction of the figures' size",
-            default=core.DEFAULT_PLANARITY_TOLERANCE, min=0.0, max=0.5, precision=6),
+            default=common.DEFAULT_PLANARITY_TOLERANCE, options=set(), min=0.0, max=0.5, precision=6),
         "set_frame_range": BoolProperty(
             name="Set Frame Range", description="Set the scene's frame range to the morph's frames",
-            default=True),
+            default=True, options=set()),
     }
 
 
@@ -81,8 +87,11 @@ class StickMorphPreferences(bpy.types.AddonPreferences):
 
     def draw(self, context):
         layout = self.layout
+        from . import ui
+        ui.draw_dependency_box(layout, context)
         layout.label(text="Defaults of the Stick Morph bake options:")
         layout.use_property_split = True
+        layout.use_property_decorate = False
         for name in OPTION_NAMES:
             layout.prop(self, name)
 
@@ -95,16 +104,17 @@ class StickMorphSceneSettings(bpy.types.PropertyGroup):
     """Per-scene choices of the sidebar panel and the last bake's statistics."""
     __annotations__ = {
         **option_properties(),
-        "source": PointerProperty(name="Source", type=bpy.types.Object, poll=_is_mesh,
+        "source": PointerProperty(name="Source", type=bpy.types.Object, poll=_is_mesh, options=set(),
                                   description="Edge mesh the morph starts from (empty: the selected non-active mesh)"),
-        "target": PointerProperty(name="Target", type=bpy.types.Object, poll=_is_mesh,
+        "target": PointerProperty(name="Target", type=bpy.types.Object, poll=_is_mesh, options=set(),
                                   description="Edge mesh the morph ends at (empty: the active object)"),
-        "frame_start": IntProperty(name="Start Frame", default=1),
-        "last_result": StringProperty(name="Last Result"),
-        "last_vertices": IntProperty(name="Vertices"),
-        "last_steiner": IntProperty(name="Steiner Vertices"),
-        "last_frames": IntProperty(name="Frames"),
-        "last_milliseconds": FloatProperty(name="Milliseconds"),
+        "frame_start": IntProperty(name="Start", description="Frame showing the source", default=1,
+                                   options=set()),
+        "last_result": StringProperty(name="Last Result", options=set()),
+        "last_vertices": IntProperty(name="Vertices", options=set()),
+        "last_steiner": IntProperty(name="Steiner Vertices", options=set()),
+        "last_frames": IntProperty(name="Frames", options=set()),
+        "last_milliseconds": FloatProperty(name="Milliseconds", options=set()),
     }
 
 

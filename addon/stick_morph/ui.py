@@ -1,8 +1,103 @@
-"""The sidebar panel: View3D > Sidebar > Stick Morph."""
+"""The sidebar panel (View3D > Sidebar > Stick Morph) and its Advanced
+sub-panel; the same layout draws the operator's Adjust Last Operation panel.
+
+Sized for the sidebar's default width in Blender 3.4 (220 px at scale 1): in
+a property-split row the label column holds about 7 characters, so those rows
+use labels of at most SPLIT_LABEL_CHARS characters and everything longer
+(check boxes, the tube radius, the expert numbers) is drawn without the
+split, where the label has the whole width. No row has a keyframe decorator
+(use_property_decorate = False; the properties are not animatable either).
+"""
+
+import textwrap
 
 import bpy
 
+from .common import StickMorphError
 from .preferences import OPTION_NAMES
+
+# Longest label of a property-split row that 3.4's default sidebar shows in
+# full: "Weights" and "Steiner" were, "Enclos…" (Enclosure Sides) was not
+# (measured from a screenshot under Xvfb, tests/blender/test_ui.py checks it).
+SPLIT_LABEL_CHARS = 7
+# Longest text of a row without split (a check box or number field across
+# the panel, about 180 px).
+FULL_LABEL_CHARS = 22
+
+# (property, label) of the rows: split rows in the main panel and in
+# Advanced, then the full-width rows. Labels None use the property's name.
+MAIN_SPLIT = (("frame_start", "Start"), ("frame_count", "Frames"), ("plane", "Plane"), ("easing", "Easing"))
+MAIN_FULL = (("renderable", None), ("tube_radius", None), ("show_triangulation", None),
+             ("set_frame_range", None))
+ADVANCED_SPLIT = (("steiner", "Steiner"), ("weights", "Weights"))
+ADVANCED_FULL = (("enclosure_sides", None),)
+# Too long for any row: a label line above a field without text.
+ADVANCED_LABELLED = (("planarity_tolerance", "Planarity tolerance:"),)
+ADVANCED = tuple(name for name, _ in ADVANCED_SPLIT + ADVANCED_FULL + ADVANCED_LABELLED)
+
+
+def _wrap(context, text):
+    """Lines of text that fit the region (labels are cut, not wrapped)."""
+    region = getattr(context, "region", None)
+    scale = context.preferences.system.ui_scale if context.preferences else 1.0
+    width = region.width if region is not None and region.width > 1 else 220
+    chars = max(16, int((width - 40) / (6.5 * scale)))
+    return textwrap.wrap(text, chars) or [""]
+
+
+def _label_lines(layout, context, text, icon="NONE"):
+    column = layout.column(align=True)
+    for k, line in enumerate(_wrap(context, text)):
+        column.label(text=line, icon=icon if k == 0 else "BLANK1" if icon != "NONE" else "NONE")
+
+
+def draw_dependency_box(layout, context):
+    """A box saying what is missing when numpy or the native module do not
+    load (dependencies.check at enable time); nothing otherwise."""
+    from .operators import dependency_status
+    status = dependency_status()
+    if status.ok:
+        return False
+    box = layout.box()
+    box.alert = True
+    lines = status.lines()
+    box.label(text=lines[0], icon="ERROR")
+    for line in lines[1:]:
+        _label_lines(box, context, line)
+    return True
+
+
+def pair_preview(context, settings):
+    """(ok, text lines) saying which object a bake would use as the source and
+    which as the target, resolved exactly as the operator does, or why it
+    cannot."""
+    from .operators import resolve_pair
+    source_name = settings.source.name if settings.source else ""
+    target_name = settings.target.name if settings.target else ""
+    try:
+        source, target = resolve_pair(context, source_name, target_name)
+    except StickMorphError as error:
+        return False, [f"Cannot bake: {error}"]
+    return True, [f"Source: {source.name}  \u2192  Target: {target.name}"]
+
+
+def draw_rows(layout, data, split_rows, full_rows, labelled_rows=()):
+    column = layout.column()
+    column.use_property_split = True
+    column.use_property_decorate = False
+    for name, label in split_rows:
+        column.prop(data, name, text=label)
+    column = layout.column()
+    column.use_property_split = False
+    column.use_property_decorate = False
+    for name, label in full_rows:
+        row = column.row()
+        if name == "tube_radius":
+            row.active = bool(getattr(data, "renderable", True))
+        row.prop(data, name, **({} if label is None else {"text": label}))
+    for name, label in labelled_rows:
+        column.label(text=label)
+        column.prop(data, name, text="")
 
 
 class VIEW3D_PT_stick_morph(bpy.types.Panel):
@@ -14,19 +109,21 @@ class VIEW3D_PT_stick_morph(bpy.types.Panel):
 
     def draw(self, context):
         layout = self.layout
+        layout.use_property_decorate = False
+        draw_dependency_box(layout, context)
         settings = context.scene.stick_morph
         column = layout.column(align=True)
         column.prop(settings, "source")
         column.prop(settings, "target")
-        if settings.source is None and settings.target is None:
-            layout.label(text="Empty: selected mesh -> active mesh", icon="INFO")
+        ok, lines = pair_preview(context, settings)
+        if not ok or (settings.source is None and settings.target is None):
+            box = layout.box()
+            for line in lines:
+                _label_lines(box, context, line, icon="INFO" if ok else "ERROR")
 
-        box = layout.box()
-        box.use_property_split = True
-        box.prop(settings, "frame_start")
-        for name in OPTION_NAMES:
-            box.prop(settings, name)
-        box.operator("scene.stick_morph_load_defaults", icon="LOOP_BACK")
+        draw_rows(layout, settings, MAIN_SPLIT, MAIN_FULL)
+        row = layout.row(align=True)
+        row.operator("scene.stick_morph_load_defaults", icon="LOOP_BACK")
 
         op = layout.operator("object.stick_morph_bake", icon="MOD_SIMPLEDEFORM")
         op.source = settings.source.name if settings.source else ""
@@ -37,12 +134,42 @@ class VIEW3D_PT_stick_morph(bpy.types.Panel):
 
         if settings.last_result:
             box = layout.box()
-            box.label(text=f"Last: {settings.last_result}")
-            box.label(text=f"{settings.last_vertices} vertices, {settings.last_steiner} Steiner")
-            box.label(text=f"{settings.last_frames} frames, {settings.last_milliseconds:.0f} ms")
+            column = box.column(align=True)
+            column.label(text=f"Last: {settings.last_result}")
+            column.label(text=f"{settings.last_vertices} vertices, {settings.last_steiner} Steiner")
+            column.label(text=f"{settings.last_frames} frames, {settings.last_milliseconds:.0f} ms")
 
 
-classes = (VIEW3D_PT_stick_morph,)
+class VIEW3D_PT_stick_morph_advanced(bpy.types.Panel):
+    """Expert options: how the compatible triangulation and the morph are built"""
+    bl_label = "Advanced"
+    bl_idname = "VIEW3D_PT_stick_morph_advanced"
+    bl_space_type = "VIEW_3D"
+    bl_region_type = "UI"
+    bl_category = "Stick Morph"
+    bl_parent_id = "VIEW3D_PT_stick_morph"
+    bl_options = {"DEFAULT_CLOSED"}
+
+    def draw(self, context):
+        layout = self.layout
+        layout.use_property_decorate = False
+        draw_rows(layout, context.scene.stick_morph, ADVANCED_SPLIT, ADVANCED_FULL, ADVANCED_LABELLED)
+
+
+def draw_operator(layout, op):
+    """The Adjust Last Operation panel of the bake: the same rows, the expert
+    ones under a heading (operator panels have no sub-panels)."""
+    layout.use_property_decorate = False
+    column = layout.column(align=True)
+    column.use_property_split = True
+    column.prop(op, "source")
+    column.prop(op, "target")
+    draw_rows(layout, op, MAIN_SPLIT, MAIN_FULL)
+    layout.label(text="Advanced")
+    draw_rows(layout, op, ADVANCED_SPLIT, ADVANCED_FULL, ADVANCED_LABELLED)
+
+
+classes = (VIEW3D_PT_stick_morph, VIEW3D_PT_stick_morph_advanced)
 
 
 register, unregister = bpy.utils.register_classes_factory(classes)

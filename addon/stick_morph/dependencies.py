@@ -1,0 +1,181 @@
+"""Can this Blender run the add-on? numpy and the native module, checked once
+at enable time.
+
+A package built for one Blender's Python enables without complaint in
+another (the extension system only looks at the .py files) and used to fail
+only at bake time; without numpy, enabling failed with a raw ImportError.
+check() tries both imports, catching ImportError and OSError (a module built
+against another libstdc++ or CGAL fails to load with OSError), and says what
+is missing, which Python the module was built for (build_info.json, written
+into the package by build_addon.py), which Python this Blender has, and how
+to rebuild. The panel shows it and the bake operator reports it as an ERROR.
+
+Free of bpy and numpy, so that it imports in any Python and is unit-tested
+outside Blender (tests/blender/test_dependencies.py).
+"""
+
+from __future__ import annotations
+
+import importlib
+import json
+import os
+import sys
+from dataclasses import dataclass, field
+
+BUILD_INFO = "build_info.json"
+BUILD_INFO_KEYS = ("python", "python_tag", "module", "built_on")
+UNKNOWN = "unknown"
+BUILD_COMMAND = "python3 build_addon.py --blender {blender}"
+
+
+def this_python() -> tuple[str, str]:
+    """("3.11", "cpython-311") of the running interpreter (Blender's own)."""
+    version = f"{sys.version_info[0]}.{sys.version_info[1]}"
+    tag = getattr(sys.implementation, "cache_tag", None) or UNKNOWN
+    return version, tag
+
+
+def read_build_info(package_dir: str) -> dict:
+    """build_info.json of the package; every key is "unknown" when the file is
+    missing or unreadable, or the key is absent (an older or hand-made build)."""
+    info = {key: UNKNOWN for key in BUILD_INFO_KEYS}
+    try:
+        with open(os.path.join(package_dir, BUILD_INFO), encoding="utf-8") as file:
+            data = json.load(file)
+    except (OSError, ValueError):
+        return info
+    if isinstance(data, dict):
+        for key in BUILD_INFO_KEYS:
+            value = data.get(key)
+            if isinstance(value, (str, int, float)) and str(value).strip():
+                info[key] = str(value).strip()
+    return info
+
+
+def module_files(package_dir: str) -> list[str]:
+    """The native module files in the package (whatever Python they are for)."""
+    try:
+        names = os.listdir(package_dir)
+    except OSError:
+        return []
+    return sorted(n for n in names if n.startswith("stickmorph") and n.endswith((".so", ".pyd")))
+
+
+def _error_text(error: BaseException) -> str:
+    return f"{type(error).__name__}: {error}"
+
+
+def import_engine(package: str | None):
+    """The native module: the copy inside the package, else a `stickmorph` on
+    sys.path (a development build). Raises ImportError or OSError, with the
+    package copy's error when neither loads."""
+    if package:
+        try:
+            return importlib.import_module(".stickmorph", package)
+        except (ImportError, OSError) as inside:
+            try:
+                return importlib.import_module("stickmorph")
+            except (ImportError, OSError):
+                raise inside from None
+    return importlib.import_module("stickmorph")
+
+
+@dataclass
+class Dependencies:
+    """The outcome of check(): None errors mean the import worked."""
+
+    numpy_error: str | None
+    engine_error: str | None
+    numpy_version: str | None = None
+    engine_file: str | None = None
+    build_info: dict = field(default_factory=lambda: {key: UNKNOWN for key in BUILD_INFO_KEYS})
+    module_files: list = field(default_factory=list)
+    python: str = UNKNOWN
+    python_tag: str = UNKNOWN
+    blender: str = "/path/to/blender"
+
+    @property
+    def ok(self) -> bool:
+        return self.numpy_error is None and self.engine_error is None
+
+    @property
+    def missing(self) -> list[str]:
+        names = []
+        if self.numpy_error is not None:
+            names.append("numpy")
+        if self.engine_error is not None:
+            names.append("the native stickmorph module")
+        return names
+
+    def built_for(self) -> str:
+        info = self.build_info
+        text = f"Python {info['python']}"
+        if info["python_tag"] != UNKNOWN:
+            text += f" ({info['python_tag']})"
+        if info["built_on"] != UNKNOWN:
+            text += f", on {info['built_on']}"
+        return text
+
+    def rebuild_command(self) -> str:
+        return BUILD_COMMAND.format(blender=self.blender or "/path/to/blender")
+
+    def lines(self) -> list[str]:
+        """Short lines for the sidebar panel (empty when everything loads)."""
+        if self.ok:
+            return []
+        lines = [f"Missing: {' and '.join(self.missing)}"]
+        if self.numpy_error is not None:
+            lines.append(f"numpy does not import in this Blender's Python {self.python}")
+            lines.append("Install numpy for it (Debian: apt-get install python3-numpy)")
+        if self.engine_error is not None:
+            module = self.build_info["module"]
+            if module == UNKNOWN and self.module_files:
+                module = ", ".join(self.module_files)
+            lines.append(f"Module: {module if module != UNKNOWN else 'none found in the add-on'}")
+            lines.append(f"Built for: {self.built_for()}")
+            lines.append(f"This Blender: Python {self.python} ({self.python_tag})")
+            lines.append("Rebuild the add-on for this Blender:")
+            lines.append(self.rebuild_command())
+        return lines
+
+    def message(self) -> str:
+        """One paragraph for an ERROR report."""
+        if self.ok:
+            return ""
+        parts = [f"{' and '.join(self.missing)} cannot be loaded"]
+        if self.numpy_error is not None:
+            parts.append(f"numpy does not import in this Blender's Python {self.python} "
+                         f"({self.numpy_error}); install numpy for it (Debian: apt-get install "
+                         "python3-numpy)")
+        if self.engine_error is not None:
+            module = self.build_info["module"]
+            found = ", ".join(self.module_files) if self.module_files else "no stickmorph module"
+            parts.append(f"the add-on holds {found}"
+                         + (f" (build_info.json: {module})" if module != UNKNOWN and module not in found else "")
+                         + f", built for {self.built_for()}; this Blender has Python {self.python} "
+                         f"({self.python_tag}) ({self.engine_error}). Rebuild the add-on for this "
+                         f"Blender: {self.rebuild_command()}")
+        return "; ".join(parts)
+
+
+def check(package_dir: str, package: str | None, blender: str | None = None) -> Dependencies:
+    """Tries to import numpy and the native module; never raises ImportError
+    or OSError. package_dir is the add-on's folder (for build_info.json and
+    the module file names), package its import name (None: only sys.path)."""
+    python, tag = this_python()
+    numpy_error = numpy_version = None
+    try:
+        import numpy
+        numpy_version = getattr(numpy, "__version__", UNKNOWN)
+    except (ImportError, OSError) as error:
+        numpy_error = _error_text(error)
+    engine_error = engine_file = None
+    try:
+        engine = import_engine(package)
+        engine_file = getattr(engine, "__file__", None)
+    except (ImportError, OSError) as error:
+        engine_error = _error_text(error)
+    return Dependencies(numpy_error=numpy_error, engine_error=engine_error, numpy_version=numpy_version,
+                        engine_file=engine_file, build_info=read_build_info(package_dir),
+                        module_files=module_files(package_dir), python=python, python_tag=tag,
+                        blender=blender or "/path/to/blender")
