@@ -75,19 +75,13 @@ def relaunch_in_sandbox():
 
 
 def install_addon(zip_path):
-    import bpy
-    scripts = bpy.utils.user_resource("SCRIPTS")
-    sandbox = os.path.realpath(os.environ[SANDBOX])
-    if not os.path.realpath(scripts).startswith(sandbox):
-        fail(f"the user scripts folder {scripts} is not in the temporary folder {sandbox}")
-    if bpy.ops.preferences.addon_install(filepath=zip_path, overwrite=True) != {"FINISHED"}:
-        fail(f"could not install the add-on from {zip_path}")
-    if bpy.ops.preferences.addon_enable(module="stick_morph") != {"FINISHED"}:
-        fail("could not enable the add-on stick_morph")
-    import stick_morph
-    if not os.path.realpath(stick_morph.__file__).startswith(sandbox):
-        fail(f"stick_morph was loaded from {stick_morph.__file__}, not from the installed zip")
-    print(f"add-on installed and enabled from {zip_path}", flush=True)
+    """Installs and enables the package the way this Blender does (a legacy
+    add-on zip before 4.2, an extension from 4.2: blender_sandbox knows)."""
+    try:
+        name = blender_sandbox.install_package(zip_path)
+    except RuntimeError as error:
+        fail(str(error))
+    print(f"add-on installed and enabled from {zip_path} as {name}", flush=True)
 
 
 def find_pair(sample):
@@ -169,12 +163,22 @@ def check_framing(scene, result):
     print(f"framing: the morph stays within the central {200 * worst:.0f}% of the frame", flush=True)
 
 
+def set_file_format(settings, file_format):
+    """Sets ImageFormatSettings.file_format. Blender 5.x lists only the formats
+    of the current media_type ("IMAGE", "MULTI_LAYER_IMAGE" or "VIDEO"), so
+    FFMPEG needs media_type VIDEO first and PNG needs IMAGE; 3.x/4.x have no
+    media_type."""
+    if hasattr(settings, "media_type"):
+        settings.media_type = "VIDEO" if file_format == "FFMPEG" else "IMAGE"
+    settings.file_format = file_format
+
+
 def render_frames(scene, frames_dir):
     import bpy
     os.makedirs(frames_dir, exist_ok=True)
     for old in glob.glob(os.path.join(frames_dir, "frame_*.png")):
         os.remove(old)
-    scene.render.image_settings.file_format = "PNG"
+    set_file_format(scene.render.image_settings, "PNG")
     scene.render.image_settings.color_mode = "RGB"
     scene.render.image_settings.color_depth = "8"
     scene.render.use_file_extension = True
@@ -199,7 +203,7 @@ def render_movie(scene, mp4_path):
     scratch = tempfile.mkdtemp(prefix="movie-", dir=os.path.dirname(mp4_path))
     try:
         settings = scene.render.image_settings
-        settings.file_format = "FFMPEG"
+        set_file_format(settings, "FFMPEG")
         settings.color_mode = "RGB"
         ffmpeg = scene.render.ffmpeg
         ffmpeg.format = "MPEG4"

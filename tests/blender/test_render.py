@@ -60,6 +60,8 @@ def test_saved_file_renders_without_the_addon(scene, addon):
     scene.render.resolution_x, scene.render.resolution_y = 160, 120
     scene.render.resolution_percentage = 100
     scene.render.film_transparent = True
+    if hasattr(scene.render.image_settings, "media_type"):  # 5.x: the formats of one media type
+        scene.render.image_settings.media_type = "IMAGE"
     scene.render.image_settings.file_format = "PNG"
     scene.render.image_settings.color_mode = "RGBA"
 
