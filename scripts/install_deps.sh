@@ -14,10 +14,13 @@ packages=(
   pybind11-dev
   libeigen3-dev
   libcgal-dev
+  libcli11-dev        # command-line parsing of the CLI, the benchmarks and the random-pair harness
+  libjsoncpp-dev      # the figure and result files (native/io)
   catch2
   python3-dev
   python3-numpy
   python3-pytest
+  python3-matplotlib  # the plots of BENCHMARKS.md (scripts/make_benchmarks.py)
   clang-14            # scripts/sanitize.sh: clang++-14 with ASan, UBSan, libFuzzer
   libclang-rt-14-dev  # the sanitizer and libFuzzer runtimes of clang 14
   libegl1 libegl-mesa0  # headless Workbench/EEVEE render through surfaceless EGL
