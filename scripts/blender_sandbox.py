@@ -1,6 +1,6 @@
 """A Blender whose user folders are temporary, and the add-on installed there.
 
-Used by tests/blender/run_pytest.py, tests/blender/gui/redo_test.py and
+Used by tests/blender/run_pytest.py, tests/blender/gui/adjust_last_operation.py and
 scripts/render_demo.py: all of them install the add-on package, and the real
 user configuration (preferences, add-ons, extensions) must never be touched.
 

@@ -26,6 +26,10 @@ import blender_sandbox  # noqa: E402
 # The name the add-on is enabled under in this Blender.
 ADDON_MODULE = blender_sandbox.addon_module_name()
 
+# gui/ holds scripts for a Blender with a window (gui/run_gui_tests.sh), not
+# pytest tests: importing one in this headless Blender would start it.
+collect_ignore = ["gui"]
+
 
 def addon_package():
     """The package to test: $STICKMORPH_ADDON_ZIP, else the newest one in dist/

@@ -1,8 +1,8 @@
 """GUI test: Adjust Last Operation on the bake operator, in a real Blender window.
 
-    xvfb-run -a -s "-screen 0 1600x900x24" \\
-        python3 scripts/blender_sandbox.py -- \\
-        blender --factory-startup --python-exit-code 1 --python tests/blender/gui/redo_test.py -- \\
+    /usr/bin/python3 scripts/blender_sandbox.py -- xvfb-run -a -s "-screen 0 1600x900x24" \\
+        blender --factory-startup --enable-event-simulate --python-exit-code 1 \\
+        --python tests/blender/gui/adjust_last_operation.py -- \\
         [--package ZIP] [--out DIR] [--frames N] [--redo-frames M] [--timeout SECONDS]
 
 (tests/blender/gui/run_gui_tests.sh runs exactly that.) Blender runs WITHOUT
@@ -38,10 +38,13 @@ Exits with os._exit: 0 if every check passed, 1 on a failed check or error,
 """
 
 import argparse
+import ctypes
 import os
+import struct
 import sys
 import threading
 import traceback
+import zlib
 
 import bpy
 import numpy as np
@@ -89,7 +92,7 @@ def target_basis():
 
 def parse_args():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-    parser = argparse.ArgumentParser(prog="redo_test.py", description=__doc__.split("\n\n")[0])
+    parser = argparse.ArgumentParser(prog="adjust_last_operation.py", description=__doc__.split("\n\n")[0])
     parser.add_argument("--package", help="the package to install (default: the newest in dist/ for this Blender)")
     parser.add_argument("--out", help="folder for the screenshot (default: out/gui/blender<M.m>/)")
     parser.add_argument("--frames", type=int, default=6, help="Frames of the first bake (default 6)")
@@ -103,7 +106,7 @@ def parse_args():
 
 
 def log(message):
-    print(f"redo_test.py: {message}", flush=True)
+    print(f"adjust_last_operation.py: {message}", flush=True)
 
 
 class CheckFailed(Exception):
@@ -241,6 +244,11 @@ def steps(args):
         yield 0.2
     window = wm.windows[0]
     yield 0.5
+    # Blender 4.x shows its first-start Quick Setup even when the splash is
+    # off; like any popup it takes every event until it is closed (Esc).
+    window.event_simulate(type="ESC", value="PRESS", x=window.width // 2, y=window.height // 2)
+    window.event_simulate(type="ESC", value="RELEASE", x=window.width // 2, y=window.height // 2)
+    yield 0.5
     log(f"Blender {bpy.app.version_string}, Python {sys.version.split()[0]}, window "
         f"{window.width}x{window.height}, background={bpy.app.background}")
     check(not bpy.app.background, "Blender runs in the background (-b): this test needs a window")
@@ -316,43 +324,35 @@ def steps(args):
         moved = float(np.abs(old_last - target_world).max())
         check(moved > 100 * RELATIVE_TOLERANCE * size,
               f"frame {frame_start + args.frames - 1} is still the target: the frame count did not change")
-
-        # The user's next Ctrl+Z takes the re-baked result away, Ctrl+Shift+Z
-        # brings it back: the redo left one proper undo step.
-        check(bpy.ops.ed.undo() == {"FINISHED"}, "undo after Adjust Last Operation failed")
-        check(not result_objects(), "undo after Adjust Last Operation left a result object")
-        check(bpy.data.objects.get("Source") is not None and bpy.data.objects.get("Target") is not None,
-              "undo after Adjust Last Operation removed the figures")
-        check(bpy.ops.ed.redo() == {"FINISHED"}, "redo after undo failed")
-        check_result(context, frame_start, args.redo_frames, source_world, target_world, size, "after undo + redo")
         context.scene.frame_set(frame_start + args.redo_frames // 2)
 
     # The sidebar on the Stick Morph tab, for the screenshot. No Python API
     # switches a sidebar tab (Region.active_panel_category is read-only in
-    # 4.x and missing in 3.4), so the mouse wheel does it over the tab strip,
-    # as a user would: it steps one tab per notch and stops at the last one,
-    # which is the add-on's (registered after Blender's own tabs).
+    # 4.x and missing in 3.4), so Ctrl+Wheel does it, as for a user: one tab
+    # per notch, stopping at the last one, which is the add-on's (registered
+    # after Blender's own tabs). The pointer is on the first panel's header:
+    # the sidebar overlaps the viewport, and where it draws nothing (below its
+    # panels) events go to the viewport instead; over a header no button
+    # takes the wheel for itself.
     space = area.spaces.active
     space.show_region_ui = True
     yield 0.5
     area, region, ui = view3d(window)
     check(ui is not None and ui.width > 1, "the sidebar did not open")
-    x, y = ui.x + ui.width - 6, ui.y + ui.height // 2
+    x, y = ui.x + ui.width // 2, ui.y + ui.height - 15
     window.event_simulate(type="MOUSEMOVE", value="NOTHING", x=x, y=y)
     yield 0.3
     for _ in range(12):
-        window.event_simulate(type="WHEELDOWNMOUSE", value="PRESS", x=x, y=y)
+        window.event_simulate(type="WHEELDOWNMOUSE", value="PRESS", x=x, y=y, ctrl=True)
         yield 0.05
     yield 0.5
+    out = os.path.abspath(args.out or os.path.join(ROOT, "out", "gui", "blender{}.{}".format(*bpy.app.version[:2])))
+    os.makedirs(out, exist_ok=True)
+    sidebar = screenshot(window, os.path.join(out, "redo_sidebar.png"))
+    print(f"STICKMORPH_SCREENSHOT {sidebar}", flush=True)
     category = getattr(ui, "active_panel_category", None)
     if category is not None:  # readable from 4.x on
         check(category == "Stick Morph", f"the sidebar shows the tab '{category}', not Stick Morph")
-    out = os.path.abspath(args.out or os.path.join(ROOT, "out", "gui", "blender{}.{}".format(*bpy.app.version[:2])))
-    os.makedirs(out, exist_ok=True)
-    sidebar = screenshot(window, area, region, os.path.join(out, "redo_sidebar.png"))
-    yield 0.5
-    check(os.path.isfile(sidebar) and os.path.getsize(sidebar) > 0, f"no screenshot written to {sidebar}")
-    print(f"STICKMORPH_SCREENSHOT {sidebar}", flush=True)
 
     # The Adjust Last Operation popup (F9) over the 3D Viewport: it draws the
     # registered operator's properties, Frames included.
@@ -362,17 +362,73 @@ def steps(args):
     window.event_simulate(type="F9", value="PRESS", x=x, y=y)
     window.event_simulate(type="F9", value="RELEASE", x=x, y=y)
     yield 1.0
-    popup = screenshot(window, area, region, os.path.join(out, "redo_popup.png"))
-    yield 0.5
-    check(os.path.isfile(popup) and os.path.getsize(popup) > 0, f"no screenshot written to {popup}")
+    popup = screenshot(window, os.path.join(out, "redo_popup.png"))
     print(f"STICKMORPH_SCREENSHOT {popup}", flush=True)
+    window.event_simulate(type="ESC", value="PRESS", x=x, y=y)
+    window.event_simulate(type="ESC", value="RELEASE", x=x, y=y)
+    yield 0.5
 
-
-def screenshot(window, area, region, path):
-    if os.path.exists(path):
-        os.remove(path)
+    area, region, _ = view3d(window)
     with bpy.context.temp_override(window=window, area=area, region=region):
-        bpy.ops.screen.screenshot(filepath=path)
+        context = bpy.context
+        # The user's next Ctrl+Z takes the re-baked result away, Ctrl+Shift+Z
+        # brings it back: the redo left one proper undo step.
+        check(bpy.ops.ed.undo() == {"FINISHED"}, "undo after Adjust Last Operation failed")
+        check(not result_objects(), "undo after Adjust Last Operation left a result object")
+        check(bpy.data.objects.get("Source") is not None and bpy.data.objects.get("Target") is not None,
+              "undo after Adjust Last Operation removed the figures")
+        check(bpy.ops.ed.redo() == {"FINISHED"}, "redo after undo failed")
+        check_result(context, frame_start, args.redo_frames, source_world, target_world, size, "after undo + redo")
+
+
+class XImage(ctypes.Structure):
+    """The head of Xlib's XImage, up to the fields read here."""
+    _fields_ = [("width", ctypes.c_int), ("height", ctypes.c_int), ("xoffset", ctypes.c_int),
+                ("format", ctypes.c_int), ("data", ctypes.POINTER(ctypes.c_ubyte)), ("byte_order", ctypes.c_int),
+                ("bitmap_unit", ctypes.c_int), ("bitmap_bit_order", ctypes.c_int), ("bitmap_pad", ctypes.c_int),
+                ("depth", ctypes.c_int), ("bytes_per_line", ctypes.c_int), ("bits_per_pixel", ctypes.c_int)]
+
+
+def screenshot(window, path):
+    """Saves the X screen (the Blender window fills it) as a PNG.
+
+    Not bpy.ops.screen.screenshot: it reads the window's front buffer, which
+    Blender 4.3 with Mesa's llvmpipe under Xvfb returns black; the X server's
+    own copy is what a user would see."""
+    x11 = ctypes.CDLL("libX11.so.6")
+    x11.XOpenDisplay.restype = ctypes.c_void_p
+    x11.XOpenDisplay.argtypes = [ctypes.c_char_p]
+    x11.XDefaultRootWindow.restype = ctypes.c_ulong
+    x11.XDefaultRootWindow.argtypes = [ctypes.c_void_p]
+    x11.XGetImage.restype = ctypes.POINTER(XImage)
+    x11.XGetImage.argtypes = [ctypes.c_void_p, ctypes.c_ulong, ctypes.c_int, ctypes.c_int, ctypes.c_uint,
+                              ctypes.c_uint, ctypes.c_ulong, ctypes.c_int]
+    x11.XCloseDisplay.argtypes = [ctypes.c_void_p]
+    display = x11.XOpenDisplay(None)
+    check(display, f"cannot open the X display {os.environ.get('DISPLAY')}")
+    try:
+        z_pixmap = 2
+        image = x11.XGetImage(display, x11.XDefaultRootWindow(display), 0, 0, window.width, window.height,
+                              0xFFFFFFFF, z_pixmap)
+        check(bool(image), "XGetImage failed")
+        im = image.contents
+        check(im.bits_per_pixel == 32 and im.byte_order == 0,
+              f"unexpected X image format ({im.bits_per_pixel} bits per pixel, byte order {im.byte_order})")
+        raw = np.ctypeslib.as_array(im.data, shape=(im.height * im.bytes_per_line,)).copy()
+        height, width, stride = im.height, im.width, im.bytes_per_line
+    finally:
+        x11.XCloseDisplay(display)
+    # 32-bit least-significant-byte-first pixels are B, G, R, unused.
+    rgb = raw.reshape(height, stride)[:, :width * 4].reshape(height, width, 4)[:, :, [2, 1, 0]]
+    check(rgb.max() > 0, "the screen is black: Blender drew nothing")
+
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
+
+    rows = b"".join(b"\x00" + row.tobytes() for row in rgb)  # filter type 0 per row
+    with open(path, "wb") as file:
+        file.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0))
+                   + chunk(b"IDAT", zlib.compress(rows, 6)) + chunk(b"IEND", b""))
     return path
 
 

@@ -11,7 +11,7 @@
 #              temporary folder, removed afterwards); never the real config
 #   --out      where the screenshot goes (default: out/gui/blender<M.m>/)
 #
-# Runs tests/blender/gui/redo_test.py (Adjust Last Operation on the bake
+# Runs tests/blender/gui/adjust_last_operation.py (Adjust Last Operation on the bake
 # operator) in `blender --factory-startup` without -b, on a 1600x900 Xvfb
 # screen, inside scripts/blender_sandbox.py. Needs the Debian packages xvfb
 # and xauth. Exits with the test's code: 0 passed, 1 failed, 2 timed out
@@ -38,7 +38,7 @@ done
 
 printf '\n==== %s ====\n' "GUI test: Adjust Last Operation ($("$BLENDER" --version 2>/dev/null | head -n 1))"
 # Blender's own exit code is not the test's (a crash or a hang must not pass):
-# redo_test.py ends the process itself with os._exit, 0 only when every check
+# adjust_last_operation.py ends the process itself with os._exit, 0 only when every check
 # passed; the outer timeout is a second watchdog for a Blender that never
 # runs Python at all.
 status=0
@@ -46,7 +46,7 @@ timeout --kill-after=10 300 \
   /usr/bin/python3 scripts/blender_sandbox.py "${sandbox[@]}" -- \
   xvfb-run -a -s "-screen 0 1600x900x24" \
   "$BLENDER" --factory-startup --enable-event-simulate --python-exit-code 1 \
-  --python tests/blender/gui/redo_test.py -- "${package[@]}" "${out[@]}" || status=$?
+  --python tests/blender/gui/adjust_last_operation.py -- "${package[@]}" "${out[@]}" || status=$?
 if [[ $status -eq 0 ]]; then
   echo "gui: 1 passed, 0 failed"
 else
