@@ -10,7 +10,7 @@
 #
 # It builds the two targets it runs (in DIR, configured if needed), runs both
 # tests with STICKMORPH_UPDATE_GOLDEN=1, which makes them write their file
-# before comparing, and prints `git diff --stat` of the result. Review the
+# before comparing, and lists the golden files that changed (git status). Review the
 # diff and commit it with the change that explains it: the normal test runs
 # never write these files, so drift is never silent.
 set -euo pipefail
@@ -37,5 +37,6 @@ export STICKMORPH_UPDATE_GOLDEN=1
 "$build_dir/stickmorph_tests" "[golden]"
 STICKMORPH_BUILD_DIR="$build_dir" /usr/bin/python3 -m pytest -q tests/python/test_golden_morphs.py
 
-git --no-pager diff --stat -- tests/data/golden
+# status, not diff --stat: a golden file for a new case is untracked.
+git status --short -- tests/data/golden
 echo "golden files regenerated; review 'git diff tests/data/golden' before committing"
