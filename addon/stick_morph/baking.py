@@ -265,12 +265,11 @@ def _modifier_input(modifier, identifier):
     inputs = getattr(properties, "inputs", None) if properties is not None else None
     if inputs is None:
         return None
+    # An RNA struct per input, by attribute (measured in 5.2: inputs[identifier]
+    # is the raw ID property group, without .value).
     item = getattr(inputs, identifier, None)
     if item is None:
-        try:
-            item = inputs[identifier]
-        except (KeyError, TypeError, IndexError):
-            raise KeyError(f"the modifier '{modifier.name}' has no input {identifier}") from None
+        raise KeyError(f"the modifier '{modifier.name}' has no input {identifier}")
     return item
 
 

@@ -102,13 +102,33 @@ def test_renderable_geometry_and_no_runtime_dependencies(scene, addon):
     # Built-in nodes only.
     assert all(node.bl_idname.startswith(("GeometryNode", "NodeGroup", "FunctionNode", "ShaderNode"))
                for node in group.nodes), [n.bl_idname for n in group.nodes]
+    # The radius reached the modifier (5.x: modifier.properties.inputs.<id>.value,
+    # earlier modifier[id]) and its tubes: the figures' size times the option.
+    from conftest import addon_import
+    baking = addon_import("baking")
+    modifier = result.modifiers[0]
+    radius = baking.get_modifier_input(modifier, baking.radius_identifier(group))
+    expected = addon.core.tube_radius(figure_size(source, target), 0.01)
+    assert radius == pytest.approx(expected, rel=1e-6)
+    if bpy.app.version >= (5, 0, 0):
+        value = getattr(modifier.properties.inputs, baking.radius_identifier(group)).value
+        assert value == pytest.approx(expected, rel=1e-6)
     scene.frame_set(3)
     depsgraph = bpy.context.evaluated_depsgraph_get()
-    mesh = result.evaluated_get(depsgraph).to_mesh()
+    evaluated = result.evaluated_get(depsgraph)
+    mesh = evaluated.to_mesh()
     try:
         assert len(mesh.polygons) > 10 * len(result.data.edges)
+        co = np.array([v.co[:] for v in mesh.vertices]) @ np.array(evaluated.matrix_world)[:3, :3].T \
+            + np.array(evaluated.matrix_world)[:3, 3]
     finally:
-        result.evaluated_get(depsgraph).to_mesh_clear()
+        evaluated.to_mesh_clear()
+    # The spheres at the joints reach about one radius out of the frame's
+    # plane (parallel to the figures' planes, between them).
+    fitted = addon.core.fit_plane(world_coords(source), world_coords(target), "AUTO")
+    frame_height = float(np.mean((evaluated_world(result, 3) - fitted.origin) @ fitted.normal))
+    heights = np.abs((co - fitted.origin) @ fitted.normal - frame_height)
+    assert 0.8 * expected <= heights.max() <= 1.01 * expected + 1e-6, (heights.max(), expected)
     key = result.data.shape_keys
     assert not key.use_relative
     assert key.animation_data.drivers[:] == []
