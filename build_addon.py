@@ -3,7 +3,7 @@
 Blender before 4.2, an extension zip for 4.2 and later.
 
     python3 build_addon.py [--blender PATH] [--python PATH] [--build-dir DIR]
-                           [--jobs N] [--install]
+                           [--dist DIR] [--jobs N] [--install] [--print-path]
 
 The native module is an ordinary CPython extension, so it loads only in a
 Blender whose embedded Python has the ABI it was compiled for (3.11, 3.13,
@@ -131,10 +131,15 @@ def interpreter_info(path: str) -> dict | None:
 
 
 def inside(path: str, folder: str) -> bool:
-    try:
-        return os.path.commonpath([os.path.realpath(path), os.path.realpath(folder)]) == os.path.realpath(folder)
-    except ValueError:
-        return False
+    """Whether path lies in folder, as written or with symbolic links resolved
+    (a bundle may be reached through a link, or link its interpreter)."""
+    for resolve in (os.path.abspath, os.path.realpath):
+        try:
+            if os.path.commonpath([resolve(path), resolve(folder)]) == resolve(folder):
+                return True
+        except ValueError:
+            pass
+    return False
 
 
 def bundled_python(blender: dict) -> str | None:
@@ -142,7 +147,7 @@ def bundled_python(blender: dict) -> str | None:
     (<blender folder>/<M.m>/python/bin/python3.X), when Blender reports it as
     its sys.executable and its headers are there. A distro Blender reports
     /usr/bin/python3.X (or its own binary), outside its folder."""
-    executable, folder = blender["executable"], os.path.dirname(os.path.realpath(blender["binary_path"]))
+    executable, folder = blender["executable"], os.path.dirname(os.path.abspath(blender["binary_path"]))
     if not executable or not os.path.isfile(executable) or not inside(executable, folder):
         return None
     if os.path.realpath(executable) == os.path.realpath(blender["binary_path"]):
@@ -353,10 +358,14 @@ def package_files():
         yield file, file.relative_to(PACKAGE)
 
 
+def package_path(blender: dict, version: str, dist: Path) -> Path:
+    return dist / f"stick_morph-{version}-blender{series(blender)}-{python_tag(blender)}-{platform_tag(blender)}.zip"
+
+
 def write_package(blender: dict, module: Path, info: dict, version: str, dist: Path) -> Path:
     extension = blender["version"] >= EXTENSIONS_SINCE
     dist.mkdir(parents=True, exist_ok=True)
-    path = dist / f"stick_morph-{version}-blender{series(blender)}-{python_tag(blender)}-{platform_tag(blender)}.zip"
+    path = package_path(blender, version, dist)
     # Blender's extension format wants the manifest at the archive root (as
     # `blender --command extension build` writes it); a legacy add-on zip
     # holds the package folder.
@@ -428,10 +437,15 @@ def main(argv=None):
     parser.add_argument("--jobs", type=int, default=2, help="parallel build jobs (default 2)")
     parser.add_argument("--install", action="store_true",
                         help="install and enable the package in the user's Blender")
+    parser.add_argument("--print-path", action="store_true",
+                        help="only print the path of the package for this Blender (nothing is built)")
     args = parser.parse_args(argv)
 
     version = addon_version()
     blender = blender_info(args.blender)
+    if args.print_path:
+        print(package_path(blender, version, Path(args.dist).resolve()))
+        return 0
     python = choose_interpreter(blender, args.python)
     print(f"Blender {blender['version_string']} embeds Python {'.'.join(map(str, blender['python']))} "
           f"({blender['executable']}); building against {python}"
