@@ -1,0 +1,129 @@
+"""The sidebar panel, its Advanced sub-panel, the settings' flags, the
+source/target preview, the result's name and the bake's stage report."""
+
+import bpy
+import pytest
+
+from conftest import addon_import, make_mesh_object, make_pair, select, POLYLINE
+
+SETTINGS_ONLY = ("source", "target", "last_result", "last_vertices", "last_steiner", "last_frames",
+                 "last_milliseconds")
+
+
+def test_no_setting_is_animatable(scene, addon, addon_name):
+    # An animatable property gets a keyframe dot in every property-split row.
+    groups = {
+        "scene settings": scene.stick_morph.bl_rna.properties,
+        "preferences": bpy.context.preferences.addons[addon_name].preferences.bl_rna.properties,
+        "operator": bpy.ops.object.stick_morph_bake.get_rna_type().properties,
+    }
+    checked = 0
+    for where, properties in groups.items():
+        for prop in properties:
+            if prop.identifier in ("rna_type", "bl_idname"):
+                continue
+            assert not prop.is_animatable, f"{where}: {prop.identifier} is animatable"
+            checked += 1
+    assert checked >= 11 * 3
+
+
+def test_layout_shows_every_option_once_with_short_labels(addon):
+    ui = addon_import("ui")
+    preferences = addon_import("preferences")
+    rows = ui.MAIN_SPLIT + ui.MAIN_FULL + ui.ADVANCED_SPLIT + ui.ADVANCED_FULL + ui.ADVANCED_LABELLED
+    names = [name for name, _ in rows]
+    assert sorted(names) == sorted(("frame_start",) + preferences.OPTION_NAMES)
+    settings = bpy.types.Scene.bl_rna.properties["stick_morph"].fixed_type.properties
+    for name, label in ui.MAIN_SPLIT + ui.ADVANCED_SPLIT:
+        text = label or settings[name].name
+        assert len(text) <= ui.SPLIT_LABEL_CHARS, f"{name}: '{text}' is cut in a split row at the default width"
+    for name, label in ui.MAIN_FULL + ui.ADVANCED_FULL + ui.ADVANCED_LABELLED:
+        text = label or settings[name].name
+        assert len(text) <= ui.FULL_LABEL_CHARS, f"{name}: '{text}'"
+    # The expert options are only in Advanced.
+    assert set(ui.ADVANCED) == {"steiner", "weights", "enclosure_sides", "planarity_tolerance"}
+    assert not set(ui.ADVANCED) & {name for name, _ in ui.MAIN_SPLIT + ui.MAIN_FULL}
+
+
+def test_advanced_is_a_closed_sub_panel(addon):
+    panel = bpy.types.VIEW3D_PT_stick_morph_advanced
+    assert panel.bl_parent_id == "VIEW3D_PT_stick_morph"
+    assert "DEFAULT_CLOSED" in panel.bl_options
+    assert panel.bl_category == bpy.types.VIEW3D_PT_stick_morph.bl_category
+
+
+def test_preview_names_source_and_target_as_the_bake_would(scene, addon):
+    ui = addon_import("ui")
+    settings = scene.stick_morph
+    source, target = make_pair("polyline", "monkey_source", "player_target")
+    ok, lines = ui.pair_preview(bpy.context, settings)
+    assert ok and lines == ["Source: monkey_source  \u2192", "Target: player_target"]
+    # The other way round when the other one is active.
+    select(target, source)
+    ok, lines = ui.pair_preview(bpy.context, settings)
+    assert ok and lines[0].startswith("Source: player_target")
+    # One selected: the operator's reason, as a hint.
+    select(source)
+    ok, lines = ui.pair_preview(bpy.context, settings)
+    assert not ok and lines == ["To bake: select two mesh objects, the target last (active); 1 selected"]
+    with pytest.raises(RuntimeError, match="1 selected"):
+        bpy.ops.object.stick_morph_bake()
+    # Pickers win over the selection; a half-filled pair is an error.
+    settings.source = target
+    ok, lines = ui.pair_preview(bpy.context, settings)
+    assert not ok and "give both source and target" in lines[0] and lines[0].startswith("Cannot bake")
+    settings.target = source
+    ok, lines = ui.pair_preview(bpy.context, settings)
+    assert ok and lines == ["Source: player_target  \u2192", "Target: monkey_source"]
+    settings.target = target
+    ok, lines = ui.pair_preview(bpy.context, settings)
+    assert not ok and "same object 'player_target'" in lines[0]
+
+
+def test_preview_of_a_non_mesh(scene, addon):
+    ui = addon_import("ui")
+    source = make_mesh_object("Figure", *POLYLINE[::2])
+    empty = bpy.data.objects.new("Empty", None)
+    bpy.context.scene.collection.objects.link(empty)
+    select(source, empty)
+    ok, lines = ui.pair_preview(bpy.context, scene.stick_morph)
+    assert not ok and "the target 'Empty' is a empty, not a mesh" in lines[0]
+
+
+@pytest.mark.parametrize("source, target, expected", [
+    ("monkey_to_player_source", "monkey_to_player_target", "monkey_to_player_morph"),
+    ("Cube.001", "Cube.002", "Cube_morph"),
+    ("source_arm", "target_arm", "arm_morph"),
+    ("walk_start_pose", "walk_end_pose", "walk_pose_morph"),
+    ("Fig", "Fig_2", "Fig_morph"),
+    ("Source", "Target", "Source_to_Target"),
+    ("S", "U", "S_to_U"),
+    ("1_a", "1_b", "1_a_to_1_b"),  # one shared digit says nothing
+    ("a" * 50, "b" * 50, "a" * 18 + "_to_" + "b" * 18),
+    ("\u00e9" * 30, "x", "\u00e9" * 17 + "_to_x"),  # cut by UTF-8 bytes, never inside a character
+])
+def test_result_name(addon, source, target, expected):
+    core = addon.core
+    name = core.result_name(source, target)
+    assert name == expected
+    assert len(name.encode("utf-8")) <= core.MAX_RESULT_NAME_BYTES
+    # With the helper's suffix it still fits Blender's 63-byte names.
+    assert len((name + "_triangulation").encode("utf-8")) <= 63
+
+
+def test_sample_pair_gets_the_short_name(scene, addon):
+    make_pair("tree", "monkey_to_player_source", "monkey_to_player_target")
+    assert bpy.ops.object.stick_morph_bake(frame_count=3, show_triangulation=True) == {"FINISHED"}
+    assert bpy.context.view_layer.objects.active.name == "monkey_to_player_morph"
+    assert "monkey_to_player_morph_triangulation" in bpy.data.objects
+    assert scene.stick_morph.last_result == "monkey_to_player_morph"
+
+
+def test_report_names_the_stages(scene, addon, capfd):
+    make_pair("tree")
+    assert bpy.ops.object.stick_morph_bake(frame_count=4) == {"FINISHED"}
+    out = capfd.readouterr().out
+    line = [l for l in out.splitlines() if "Stick Morph: 'Source_to_Target'" in l]
+    assert line, out
+    for stage in ("read", "check", "morph", "build"):
+        assert f"{stage} " in line[0] and " ms" in line[0], line[0]
