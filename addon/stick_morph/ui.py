@@ -39,7 +39,8 @@ ADVANCED = tuple(name for name, _ in ADVANCED_SPLIT + ADVANCED_FULL + ADVANCED_L
 def _wrap(context, text):
     """Lines of text that fit the region (labels are cut, not wrapped)."""
     region = getattr(context, "region", None)
-    scale = context.preferences.system.ui_scale if context.preferences else 1.0
+    # ui_scale is 0 in background mode (no window).
+    scale = (context.preferences.system.ui_scale if context.preferences else 0.0) or 1.0
     width = region.width if region is not None and region.width > 1 else 220
     # About 7 px per character of the UI font at scale 1, less the margins,
     # a box and an icon (measured on 3.4's sidebar: 24 characters fit in 220 px).

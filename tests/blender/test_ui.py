@@ -127,3 +127,123 @@ def test_report_names_the_stages(scene, addon, capfd):
     assert line, out
     for stage in ("read", "check", "morph", "build"):
         assert f"{stage} " in line[0] and " ms" in line[0], line[0]
+
+
+class FakeLayout:
+    """Records what a draw() puts in a layout, checking every property name
+    against the data it is drawn from (headless Blender draws nothing)."""
+
+    def __init__(self, record):
+        self.record = record
+        self.use_property_split = False
+        self.use_property_decorate = True
+        self.alert = False
+        self.active = True
+
+    def _child(self, *args, **kwargs):
+        # Sub-layouts start with their parent's flags, as in Blender.
+        child = FakeLayout(self.record)
+        child.use_property_split = self.use_property_split
+        child.use_property_decorate = self.use_property_decorate
+        return child
+
+    column = row = box = split = _child
+
+    def label(self, text="", icon="NONE", **kwargs):
+        self.record.append(("label", text, icon))
+
+    def separator(self, **kwargs):
+        pass
+
+    def prop(self, data, name, text=None, **kwargs):
+        assert name in data.bl_rna.properties, f"no property {name} on {data}"
+        self.record.append(("prop", name, text, self.use_property_split, self.use_property_decorate))
+
+    def operator(self, idname, **kwargs):
+        module, name = idname.split(".")
+        rna = getattr(getattr(bpy.ops, module), name).get_rna_type().properties
+        record = self.record
+        record.append(("operator", idname))
+
+        class Properties:
+            def __setattr__(self, key, value):
+                assert key in rna, f"{idname} has no property {key}"
+                record.append(("set", key))
+        return Properties()
+
+
+def draw(panel_class, context, data=None):
+    record = []
+    fake = type("FakePanel", (), {"layout": FakeLayout(record)})()
+    panel_class.draw(fake, context)
+    return record
+
+
+def test_panels_draw_every_option_without_decorators(scene, addon):
+    make_pair("tree")
+    main = draw(bpy.types.VIEW3D_PT_stick_morph, bpy.context)
+    advanced = draw(bpy.types.VIEW3D_PT_stick_morph_advanced, bpy.context)
+    props = [r for r in main + advanced if r[0] == "prop"]
+    # No row draws a keyframe decorator.
+    assert all(not decorate for *_, decorate in props), props
+    ui = addon_import("ui")
+    drawn = {r[1] for r in props}
+    assert drawn == {name for name, _ in ui.MAIN_SPLIT + ui.MAIN_FULL + ui.ADVANCED_SPLIT + ui.ADVANCED_FULL
+                     + ui.ADVANCED_LABELLED} | {"source", "target"}
+    assert not {r[1] for r in props if r in main} & set(ui.ADVANCED)
+    labels = [r[1] for r in main if r[0] == "label"]
+    assert "Source: Source  \u2192" in labels and "Target: Target" in labels
+    # The Bake button gets every option of the scene settings.
+    assert ("operator", "object.stick_morph_bake") in main
+    preferences = addon_import("preferences")
+    assert {r[1] for r in main if r[0] == "set"} >= set(preferences.OPTION_NAMES) | {"source", "target", "frame_start"}
+
+
+def test_panel_says_what_is_missing(scene, addon, monkeypatch):
+    operators = addon_import("operators")
+    dependencies = addon_import("dependencies")
+    failing = dependencies.Dependencies(
+        numpy_error=None, engine_error="ModuleNotFoundError: No module named 'stickmorph'",
+        build_info={"python": "3.13", "python_tag": "cpython-313",
+                    "module": "stickmorph.cpython-313-x86_64-linux-gnu.so", "built_on": "Debian 13, GCC 14"},
+        module_files=["stickmorph.cpython-313-x86_64-linux-gnu.so"], python="3.11", python_tag="cpython-311",
+        blender="/usr/bin/blender")
+    monkeypatch.setattr(operators, "_status", failing)
+    # The bake checks a failed status again (numpy may have been installed since).
+    monkeypatch.setattr(dependencies, "check", lambda *args, **kwargs: failing)
+    labels = [r[1] for r in draw(bpy.types.VIEW3D_PT_stick_morph, bpy.context) if r[0] == "label"]
+    text = " ".join(labels)
+    assert labels[0] == "Missing: the native stickmorph module"
+    for fragment in ("Python 3.13 (cpython-313)", "Debian 13, GCC 14", "Python 3.11 (cpython-311)",
+                     "python3 build_addon.py --blender /usr/bin/blender"):
+        assert fragment in text, (fragment, labels)
+    # The bake refuses with the same words, and changes nothing.
+    make_pair("tree")
+    count = len(bpy.data.objects)
+    with pytest.raises(RuntimeError, match="the native stickmorph module cannot be loaded") as error:
+        bpy.ops.object.stick_morph_bake(frame_count=3)
+    assert "build_addon.py --blender /usr/bin/blender" in str(error.value)
+    assert len(bpy.data.objects) == count
+
+
+def test_redo_panel_and_preferences_draw(scene, addon, addon_name):
+    ui = addon_import("ui")
+    record = []
+    op = bpy.context.window_manager.operator_properties_last("object.stick_morph_bake")
+    ui.draw_operator(FakeLayout(record), op)
+    drawn = [r[1] for r in record if r[0] == "prop"]
+    preferences = addon_import("preferences")
+    assert sorted(drawn) == sorted(set(preferences.OPTION_NAMES) | {"source", "target", "frame_start"})
+    assert all(not r[4] for r in record if r[0] == "prop")
+
+    prefs = bpy.context.preferences.addons[addon_name].preferences
+    record = []
+
+    class Wrapped:  # the preferences, with a recording layout
+        layout = FakeLayout(record)
+
+        def __getattr__(self, name):
+            return getattr(prefs, name)
+
+    type(prefs).draw(Wrapped(), bpy.context)
+    assert sorted(r[1] for r in record if r[0] == "prop") == sorted(preferences.OPTION_NAMES)
