@@ -1,0 +1,569 @@
+#!/usr/bin/env python3
+"""Measure how natural a morph looks, on every pair of a corpus folder (issue 12).
+
+    /usr/bin/python3 scripts/motion_quality.py out/motion_corpus --build-dir build \
+        [--frames 30] [--ours-args "--weights uniform"] [--json FILE] [--filmstrip DIR]
+
+For every pair (NAME.source.json / NAME.target.json, as scripts/motion_corpus.py writes
+them) it runs `stickmorph morph` (our barycentric morph, once per --weights kind, with
+--ours-args passed through), `stickmorph morph --method linear` (straight lines) and an
+as-rigid-as-possible reference computed here (ARAP on the figure's own edges), and
+measures each morph: edge-length deviation, joint-angle deviation, minimum size, speed
+unevenness, turning beyond the needed rotation and frames that are not valid stick figures
+compatible with the source. docs/MOTION.md defines every number; the metric functions
+below are the definitions.
+
+It prints Markdown: one row per pair and method, then per-method medians and 90th
+percentiles, then the issue's targets as pass/fail per method.
+"""
+import argparse
+import json
+import math
+import os
+import pathlib
+import shlex
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+REPO = pathlib.Path(__file__).resolve().parents[1]
+TIMEOUT_SECONDS = 300
+
+# Issue 12's targets (docs/MOTION.md restates them).
+EDGE_MEDIAN, EDGE_P90 = 0.02, 0.08
+JOINT_MEDIAN_DEG = 2.0
+MIN_SIZE, MIN_SIZE_SHARE = 0.9, 0.9
+UNEVEN_MEDIAN, UNEVEN_P90 = 1.2, 1.6
+BEYOND_MAX_DEG = 45.0
+SELF_TURN_DEG, SELF_TURN_EDGE, SELF_TURN_SIZE = 178.0, 0.01, 0.99
+
+
+# ---------------------------------------------------------------------------
+# metrics: frames is an (N, n, 2) array, times the N values of t from 0 to 1
+
+def _interior(frames):
+    """Interior frames only: the first and last are the source and target themselves, so
+    they deviate by nothing and would dilute every average."""
+    return slice(1, max(1, len(frames) - 1))
+
+
+def edge_lengths(frames, edges):
+    e = np.asarray(edges, dtype=int).reshape(-1, 2)
+    return np.linalg.norm(frames[:, e[:, 1]] - frames[:, e[:, 0]], axis=2)  # (N, m)
+
+
+def edge_length_deviation(frames, edges, times):
+    """Mean over edges and interior frames of |L(t) - ((1-t)L0 + tL1)| / max(L0, L1): how far
+    the edges stretch away from changing their length linearly."""
+    if len(edges) == 0 or len(frames) < 3:
+        return 0.0
+    lengths = edge_lengths(frames, edges)
+    t = np.asarray(times)[:, None]
+    linear = (1 - t) * lengths[0] + t * lengths[-1]
+    dev = np.abs(lengths - linear) / np.maximum(lengths[0], lengths[-1])
+    return float(dev[_interior(frames)].mean())
+
+
+def joint_angles(points, edges):
+    """The joints: (vertex, neighbour a, neighbour b) for every two consecutive edges around a
+    vertex of degree >= 2, in counter-clockwise order in `points` (the source). A vertex of
+    degree d has d of them (degree 2: the angle on each side)."""
+    nbrs = {}
+    for i, j in edges:
+        nbrs.setdefault(i, []).append(j)
+        nbrs.setdefault(j, []).append(i)
+    out = []
+    for v, ns in sorted(nbrs.items()):
+        if len(ns) < 2:
+            continue
+        ns = sorted(ns, key=lambda u: math.atan2(points[u][1] - points[v][1], points[u][0] - points[v][0]))
+        out += [(v, ns[k], ns[(k + 1) % len(ns)]) for k in range(len(ns))]
+    return np.asarray(out, dtype=int).reshape(-1, 3)
+
+
+def _ccw_angle(frames, joints):
+    """Counter-clockwise angle from edge (v, a) to edge (v, b), in [0, 2pi), per frame."""
+    u = frames[:, joints[:, 1]] - frames[:, joints[:, 0]]
+    w = frames[:, joints[:, 2]] - frames[:, joints[:, 0]]
+    cross = u[..., 0] * w[..., 1] - u[..., 1] * w[..., 0]
+    dot = (u * w).sum(axis=2)
+    return np.mod(np.arctan2(cross, dot), 2 * np.pi)
+
+
+def _wrap(a):
+    """Angle(s) into (-pi, pi]."""
+    return np.pi - np.mod(np.pi - np.asarray(a, dtype=float), 2 * np.pi)
+
+
+def joint_angle_deviation(frames, edges, times):
+    """Mean over joints and interior frames, in degrees, of how far the angle between two
+    consecutive edges at a vertex is from its linear interpolation. Both end angles are in
+    (0, 360) in the same rotation order (the pair is compatible), so the linear interpolation
+    is the way that never folds the two edges onto each other; the difference is taken the
+    short way, so a frame whose edges did swap order still counts a bounded error."""
+    joints = joint_angles(frames[0], edges)
+    if len(joints) == 0 or len(frames) < 3:
+        return 0.0
+    ang = _ccw_angle(frames, joints)
+    t = np.asarray(times)[:, None]
+    linear = (1 - t) * ang[0] + t * ang[-1]
+    dev = np.abs(_wrap(ang - linear))
+    return float(np.degrees(dev[_interior(frames)].mean()))
+
+
+def rms_radius(frames):
+    c = frames.mean(axis=1, keepdims=True)
+    return np.sqrt(((frames - c) ** 2).sum(axis=2).mean(axis=1))
+
+
+def min_size(frames, times):
+    """Minimum over frames of the RMS radius about the centroid divided by its linear
+    interpolation between the two ends' RMS radii: below 1 the figure shrinks on the way
+    (the collapse the issue saw: 0.77 in a self-turn)."""
+    r = rms_radius(frames)
+    t = np.asarray(times)
+    linear = (1 - t) * r[0] + t * r[-1]
+    if linear.min() <= 0:
+        return 1.0  # a single vertex has no size to lose
+    return float((r / linear).min())
+
+
+def steps(frames):
+    """RMS vertex displacement between consecutive frames."""
+    return np.sqrt(((frames[1:] - frames[:-1]) ** 2).sum(axis=2).mean(axis=1))
+
+
+def speed_unevenness(frames):
+    """Largest step over the mean step: 1 for constant speed (times are equally spaced). A
+    morph whose motion bunches into its first or last step scores high."""
+    s = steps(frames)
+    if len(s) == 0 or s.mean() <= 1e-300:
+        return 1.0  # nothing moves: no unevenness
+    return float(s.max() / s.mean())
+
+
+def procrustes_angle(a, b):
+    """The rotation angle (radians, in (-pi, pi]) that best maps a onto b after both are
+    centred (least squares; a uniform scale does not change the best angle)."""
+    a = a - a.mean(axis=0)
+    b = b - b.mean(axis=0)
+    cross = float((a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]).sum())
+    dot = float((a * b).sum())
+    return math.atan2(cross, dot)
+
+
+def turning(frames):
+    """Rotation the eye sees: the best-fit (Procrustes) rotation from each frame to the next,
+    accumulated over the frames (the angle track, unwrapped by construction since each step
+    is taken the short way). Returns degrees:
+      net     the accumulated angle at the end (signed),
+      path    the sum of |steps| (a turn there and back counts both ways),
+      needed  the Procrustes rotation from source to target, the short way,
+      beyond  path - |needed|: turning that the pair did not ask for.
+    Accumulating steps rather than taking each frame's angle relative to frame 0 matters for
+    a deforming figure: the end angle relative to frame 0 is the needed one by definition,
+    so a self-turn by 180 degrees would always "turn 180" however much of the way it got
+    there by collapsing and re-growing instead of turning."""
+    inc = np.array([procrustes_angle(frames[k], frames[k + 1]) for k in range(len(frames) - 1)])
+    needed = procrustes_angle(frames[0], frames[-1])
+    net = float(inc.sum()) if len(inc) else 0.0
+    path = float(np.abs(inc).sum()) if len(inc) else 0.0
+    return {"net": math.degrees(net), "path": math.degrees(path), "needed": math.degrees(needed),
+            "beyond": math.degrees(path - abs(needed)), "track": np.degrees(np.cumsum(inc)).tolist()}
+
+
+def measure(frames, edges, times):
+    frames = np.asarray(frames, dtype=float)
+    turn = turning(frames)
+    return {"edge_dev": edge_length_deviation(frames, edges, times),
+            "joint_dev_deg": joint_angle_deviation(frames, edges, times),
+            "min_size": min_size(frames, times),
+            "unevenness": speed_unevenness(frames),
+            "turn_deg": turn["net"], "turn_path_deg": turn["path"], "needed_deg": turn["needed"],
+            "beyond_deg": turn["beyond"],
+            "series": {"steps": steps(frames).tolist(), "rms_radius": rms_radius(frames).tolist(),
+                       "angle_track_deg": turn["track"]}}
+
+
+# ---------------------------------------------------------------------------
+# the ARAP reference
+
+def arap_frames(src, tgt, edges, times):
+    """As-rigid-as-possible interpolation on the figure's own edges: every edge vector turns
+    by its own rotation (taken within 180 degrees of the figure's Procrustes rotation, so all
+    edges of a figure turned by 180 degrees turn the same way) while its length changes
+    linearly; each frame's vertices are the least-squares fit to those edge vectors (exact on
+    a tree), with the centroid moving on a straight line. Nothing keeps it from
+    self-intersecting, which is what it is measured for."""
+    src = np.asarray(src, dtype=float)
+    tgt = np.asarray(tgt, dtype=float)
+    n = len(src)
+    e = np.asarray(edges, dtype=int).reshape(-1, 2)
+    times = np.asarray(times, dtype=float)
+    c0, c1 = src.mean(axis=0), tgt.mean(axis=0)
+    out = np.empty((len(times), n, 2))
+    if len(e) == 0:
+        for k, t in enumerate(times):
+            out[k] = src + t * (c1 - c0)
+    else:
+        d0 = src[e[:, 1]] - src[e[:, 0]]
+        d1 = tgt[e[:, 1]] - tgt[e[:, 0]]
+        a0 = np.arctan2(d0[:, 1], d0[:, 0])
+        a1 = np.arctan2(d1[:, 1], d1[:, 0])
+        whole = procrustes_angle(src, tgt)
+        turn = whole + _wrap(a1 - a0 - whole)
+        l0, l1 = np.linalg.norm(d0, axis=1), np.linalg.norm(d1, axis=1)
+        incidence = np.zeros((len(e), n))
+        incidence[np.arange(len(e)), e[:, 0]] = -1
+        incidence[np.arange(len(e)), e[:, 1]] = 1
+        # minimum-norm least squares: for a connected figure its solution has mean 0, so
+        # adding the centroid places it
+        pinv = np.linalg.pinv(incidence)
+        for k, t in enumerate(times):
+            ang = a0 + t * turn
+            length = (1 - t) * l0 + t * l1
+            d = np.stack([length * np.cos(ang), length * np.sin(ang)], axis=1)
+            out[k] = pinv @ d + ((1 - t) * c0 + t * c1)
+    out[0], out[-1] = src, tgt  # exactly, as the engine's frames are
+    return out
+
+
+# ---------------------------------------------------------------------------
+# running the engine
+
+def read_figure(path):
+    doc = json.loads(pathlib.Path(path).read_text())
+    return np.asarray(doc["vertices"], dtype=float).reshape(-1, 2), [tuple(x) for x in doc["edges"]]
+
+
+def write_figure(path, points, edges, name="frame"):
+    doc = {"name": name, "vertices": [[float(x), float(y)] for x, y in points],
+           "edges": [[int(i), int(j)] for i, j in edges]}
+    pathlib.Path(path).write_text(json.dumps(doc))
+
+
+def run_morph(cli, src, tgt, out, frames, extra):
+    """Returns (frames, times, stats) or raises RuntimeError with the CLI's error line."""
+    cmd = [str(cli), "morph", str(src), str(tgt), "-o", str(out), "--frames", str(frames)] + list(extra)
+    r = subprocess.run(cmd, capture_output=True, text=True, timeout=TIMEOUT_SECONDS)
+    if r.returncode != 0:
+        raise RuntimeError((r.stderr.strip() or f"exit {r.returncode}") + " [" + " ".join(cmd[1:]) + "]")
+    doc = json.loads(pathlib.Path(out).read_text())
+    return np.asarray(doc["frames"], dtype=float), np.asarray(doc["times"], dtype=float), doc.get("stats", {})
+
+
+def bad_frames(cli, src_path, frames, edges, tmp):
+    """Interior frames that are not stick figures compatible with the source, decided by the
+    engine's own exact test: `stickmorph check SRC FRAME` exits 1 (incompatible: an edge
+    order or the outside changed) or 2 (not a figure: edges cross, vertices coincide)."""
+    bad = []
+    frame_path = pathlib.Path(tmp) / "frame.json"
+    for k in range(1, len(frames) - 1):
+        write_figure(frame_path, frames[k], edges)
+        r = subprocess.run([str(cli), "check", str(src_path), str(frame_path)], capture_output=True,
+                           text=True, timeout=TIMEOUT_SECONDS)
+        if r.returncode != 0:
+            bad.append(k)
+    return bad
+
+
+def corpus_pairs(folder):
+    """(name, kind, tags) of every pair in the folder, in manifest order when there is one."""
+    folder = pathlib.Path(folder)
+    manifest = folder / "manifest.json"
+    if manifest.exists():
+        pairs = json.loads(manifest.read_text())["pairs"]
+        listed = [(p["name"], p.get("kind", ""), p) for p in pairs]
+        if all((folder / f"{name}.source.json").exists() for name, _, _ in listed):
+            return listed
+    names = sorted(p.name[:-len(".source.json")] for p in folder.glob("*.source.json")
+                   if (folder / p.name.replace(".source.json", ".target.json")).exists())
+    return [(name, name.split("_")[0], {}) for name in names]
+
+
+def self_turn_180(name, tags):
+    return tags.get("self_turn_deg") == 180 or "self_turn_180" in name
+
+
+# ---------------------------------------------------------------------------
+# reporting
+
+COLUMNS = [("edge_dev", "edge dev", "{:.3f}"), ("joint_dev_deg", "joint dev °", "{:.2f}"),
+           ("min_size", "min size", "{:.3f}"), ("unevenness", "unevenness", "{:.2f}"),
+           ("turn_deg", "turn °", "{:.1f}"), ("needed_deg", "needed °", "{:.1f}"),
+           ("beyond_deg", "beyond °", "{:.1f}")]
+
+
+def fmt(v, spec="{:.3f}"):
+    return "—" if v is None or (isinstance(v, float) and math.isnan(v)) else spec.format(v)
+
+
+def percentile(values, q):
+    v = [x for x in values if x is not None and not math.isnan(x)]
+    return float(np.percentile(v, q)) if v else float("nan")
+
+
+def summarize(results, methods):
+    """Per method: median and 90th percentile of every metric over the pairs it morphed (for
+    the minimum size the bad tail is the low one, so its 10th percentile), plus the counts."""
+    summary = {}
+    for m in methods:
+        rows = [r[m] for r in results.values() if m in r and "error" not in r[m]]
+        s = {"pairs": len(rows), "failed": sum(1 for r in results.values() if m in r and "error" in r[m])}
+        for key, _, _ in COLUMNS:
+            vals = [row[key] for row in rows]
+            s[key] = {"median": percentile(vals, 50), "p90": percentile(vals, 90), "p10": percentile(vals, 10),
+                      "max": max(vals) if vals else float("nan")}
+        s["bad_frames"] = sum(len(row["bad_frames"]) for row in rows if row["bad_frames"] is not None)
+        s["pairs_with_bad_frames"] = sum(1 for row in rows if row["bad_frames"])
+        s["bad_frames_checked"] = all(row["bad_frames"] is not None for row in rows)
+        s["min_size_share_ok"] = (sum(1 for row in rows if row["min_size"] >= MIN_SIZE) / len(rows)
+                                  if rows else float("nan"))
+        summary[m] = s
+    return summary
+
+
+def targets(results, summary, methods, corpus):
+    """Issue 12's targets, per method: (target text, {method: (passed, shown value)})."""
+    out = []
+
+    def add(text, fn):
+        out.append((text, {m: fn(m, summary[m]) for m in methods}))
+
+    add(f"edge dev median ≤ {EDGE_MEDIAN} and p90 ≤ {EDGE_P90}",
+        lambda m, s: (s["edge_dev"]["median"] <= EDGE_MEDIAN and s["edge_dev"]["p90"] <= EDGE_P90,
+                      f"{s['edge_dev']['median']:.3f} / {s['edge_dev']['p90']:.3f}"))
+    add(f"joint dev median ≤ {JOINT_MEDIAN_DEG:g}°",
+        lambda m, s: (s["joint_dev_deg"]["median"] <= JOINT_MEDIAN_DEG, f"{s['joint_dev_deg']['median']:.2f}°"))
+    add(f"min size ≥ {MIN_SIZE} in {MIN_SIZE_SHARE:.0%} of pairs",
+        lambda m, s: (s["min_size_share_ok"] >= MIN_SIZE_SHARE, f"{s['min_size_share_ok']:.0%}"))
+    add(f"unevenness median ≤ {UNEVEN_MEDIAN} and p90 ≤ {UNEVEN_P90}",
+        lambda m, s: (s["unevenness"]["median"] <= UNEVEN_MEDIAN and s["unevenness"]["p90"] <= UNEVEN_P90,
+                      f"{s['unevenness']['median']:.2f} / {s['unevenness']['p90']:.2f}"))
+    add(f"no pair turns > {BEYOND_MAX_DEG:g}° beyond the needed rotation",
+        lambda m, s: (s["beyond_deg"]["max"] <= BEYOND_MAX_DEG, f"max {s['beyond_deg']['max']:.1f}°"))
+
+    def self_turn(m, s):
+        rows = [(name, results[name][m]) for name, _, tags in corpus
+                if self_turn_180(name, tags) and m in results[name]]
+        if not rows:
+            return (None, "no 180° pair")
+        ok, shown = True, []
+        for name, r in rows:
+            if "error" in r:
+                return (False, "failed")
+            ok &= (abs(r["turn_deg"]) >= SELF_TURN_DEG and r["edge_dev"] <= SELF_TURN_EDGE
+                   and r["min_size"] >= SELF_TURN_SIZE)
+            shown.append(f"{abs(r['turn_deg']):.1f}°, {r['edge_dev']:.3f}, {r['min_size']:.2f}")
+        return (ok, "; ".join(shown))
+    add(f"180° self-turn: turns ≥ {SELF_TURN_DEG:g}°, edge dev ≤ {SELF_TURN_EDGE}, min size ≥ {SELF_TURN_SIZE}",
+        self_turn)
+    add("0 invalid frames (and every morph succeeds)",
+        lambda m, s: ((s["bad_frames"] == 0 and s["failed"] == 0) if s["bad_frames_checked"] else None,
+                      f"{s['bad_frames']} in {s['pairs_with_bad_frames']} pairs"
+                      + (f", {s['failed']} failed" if s["failed"] else "")
+                      + ("" if s["bad_frames_checked"] else " (not checked)")))
+    return out
+
+
+def print_report(corpus, results, methods, summary, target_rows, per_pair=True, file=sys.stdout):
+    def line(cells):
+        print("| " + " | ".join(cells) + " |", file=file)
+    if per_pair:
+        line(["pair", "n", "method"] + [c[1] for c in COLUMNS] + ["bad frames"])
+        line(["---"] * (len(COLUMNS) + 4))
+        for name, _, _ in corpus:
+            for m in methods:
+                r = results[name].get(m)
+                if r is None:
+                    continue
+                if "error" in r:
+                    line([name, str(results[name]["_n"]), m] + ["—"] * len(COLUMNS) + ["failed: " + r["error"][:80]])
+                    continue
+                bad = "not checked" if r["bad_frames"] is None else str(len(r["bad_frames"]))
+                line([name, str(results[name]["_n"]), m] + [fmt(r[k], f) for k, _, f in COLUMNS] + [bad])
+        print(file=file)
+    line(["method", "pairs", "edge dev med / p90", "joint dev ° med / p90", "min size med / p10",
+          "unevenness med / p90", "beyond ° med / p90 / max", "bad frames (pairs)"])
+    line(["---"] * 8)
+    for m in methods:
+        s = summary[m]
+        line([m, f"{s['pairs']}" + (f" (+{s['failed']} failed)" if s["failed"] else ""),
+              f"{s['edge_dev']['median']:.3f} / {s['edge_dev']['p90']:.3f}",
+              f"{s['joint_dev_deg']['median']:.2f} / {s['joint_dev_deg']['p90']:.2f}",
+              f"{s['min_size']['median']:.3f} / {s['min_size']['p10']:.3f}",
+              f"{s['unevenness']['median']:.2f} / {s['unevenness']['p90']:.2f}",
+              f"{s['beyond_deg']['median']:.1f} / {s['beyond_deg']['p90']:.1f} / {s['beyond_deg']['max']:.1f}",
+              f"{s['bad_frames']} ({s['pairs_with_bad_frames']})" + ("" if s["bad_frames_checked"] else " unchecked")])
+    print(file=file)
+    line(["target"] + methods)
+    line(["---"] * (len(methods) + 1))
+    for text, per in target_rows:
+        cells = []
+        for m in methods:
+            ok, shown = per[m]
+            cells.append(("n/a" if ok is None else "PASS" if ok else "FAIL") + f" ({shown})")
+        line([text] + cells)
+
+
+def _finite(value):
+    """NaN (a summary over no pairs) as null: JSON has no NaN."""
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    if isinstance(value, dict):
+        return {k: _finite(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_finite(v) for v in value]
+    return value
+
+
+def svg_filmstrip(path, frames, edges, title, count=7):
+    """A plain filmstrip for the references the CLI cannot draw (ARAP): `count` frames side by
+    side at one scale, source blue to target red, like `stickmorph morph --svg`."""
+    idx = np.linspace(0, len(frames) - 1, count).round().astype(int)
+    lo, hi = frames.reshape(-1, 2).min(axis=0), frames.reshape(-1, 2).max(axis=0)
+    span = float(max(hi - lo)) or 1.0
+    cell, pad = 160.0, 10.0
+    parts = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{count * cell}" height="{cell + 20}">',
+             f'<text x="4" y="14" font-size="12">{title}</text>']
+    for c, k in enumerate(idx):
+        t = k / max(1, len(frames) - 1)
+        color = f"rgb({int(255 * t)},0,{int(255 * (1 - t))})"
+        p = (frames[k] - lo) / span * (cell - 2 * pad)
+        pts = [(c * cell + pad + x, 20 + cell - pad - y) for x, y in p]
+        for i, j in edges:
+            parts.append(f'<line x1="{pts[i][0]:.2f}" y1="{pts[i][1]:.2f}" x2="{pts[j][0]:.2f}" '
+                         f'y2="{pts[j][1]:.2f}" stroke="{color}" stroke-width="1"/>')
+    parts.append("</svg>")
+    pathlib.Path(path).write_text("\n".join(parts) + "\n")
+
+
+# ---------------------------------------------------------------------------
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("corpus", nargs="?", default="out/motion_corpus", help="corpus folder (motion_corpus.py)")
+    ap.add_argument("--build-dir", default=os.environ.get("STICKMORPH_BUILD_DIR", str(REPO / "build")),
+                    help="folder with the stickmorph CLI (default $STICKMORPH_BUILD_DIR or build)")
+    ap.add_argument("--frames", type=int, default=30, help="frames per morph (default 30, as in the issue)")
+    ap.add_argument("--ours-args", default="",
+                    help='extra `stickmorph morph` options for our method, e.g. "--weights uniform" '
+                         '(given --weights, the method runs once with them instead of once per --weights kind)')
+    ap.add_argument("--weights", default="mvc,uniform,floater",
+                    help="weight kinds our method runs with, comma-separated (default mvc,uniform,floater)")
+    ap.add_argument("--methods", default="ours,linear,arap", help="which of ours,linear,arap to run")
+    ap.add_argument("--check-frames", choices=["all", "references", "none"], default="all",
+                    help="count invalid frames with `stickmorph check` for every method (all), only for "
+                         "straight lines and ARAP (references; ours verifies its own frames), or not at all")
+    ap.add_argument("--json", help="write every number (per pair, per method, per frame series) to this file")
+    ap.add_argument("--filmstrip", help="write SVG filmstrips of the 3 worst pairs per metric into this folder")
+    ap.add_argument("--filmstrip-method", help="the method whose worst pairs are drawn (default: the first)")
+    ap.add_argument("--summary-only", action="store_true", help="print the summary tables without per-pair rows")
+    args = ap.parse_args(argv)
+
+    cli = pathlib.Path(args.build_dir) / "stickmorph"
+    if not cli.exists():
+        sys.exit(f"error: {cli} is missing (cmake --build build --target stickmorph)")
+    folder = pathlib.Path(args.corpus)
+    corpus = corpus_pairs(folder)
+    if not corpus:
+        sys.exit(f"error: no NAME.source.json / NAME.target.json pairs in {folder} "
+                 "(make them with scripts/motion_corpus.py)")
+    families = [f.strip() for f in args.methods.split(",") if f.strip()]
+    ours_args = shlex.split(args.ours_args)
+    methods = {}  # label -> extra CLI args, or None for ARAP
+    if "ours" in families:
+        if "--weights" in ours_args or any(a.startswith("--weights=") for a in ours_args):
+            methods["ours"] = ours_args
+        else:
+            for w in [w.strip() for w in args.weights.split(",") if w.strip()]:
+                methods[f"ours[{w}]"] = ours_args + ["--weights", w]
+    if "linear" in families:
+        methods["linear"] = ["--method", "linear"]
+    if "arap" in families:
+        methods["arap"] = None
+    labels = list(methods)
+
+    results = {}
+    frames_kept = {}
+    with tempfile.TemporaryDirectory(prefix="motion_quality_") as tmp:
+        for name, kind, tags in corpus:
+            src_path, tgt_path = folder / f"{name}.source.json", folder / f"{name}.target.json"
+            src, edges = read_figure(src_path)
+            tgt, _ = read_figure(tgt_path)
+            results[name] = {"_n": len(src), "_kind": kind}
+            for label, extra in methods.items():
+                try:
+                    if extra is None:
+                        times = np.linspace(0.0, 1.0, args.frames)
+                        frames, stats = arap_frames(src, tgt, edges, times), {}
+                    else:
+                        frames, times, stats = run_morph(cli, src_path, tgt_path, pathlib.Path(tmp) / "morph.json",
+                                                         args.frames, extra)
+                except RuntimeError as exc:
+                    results[name][label] = {"error": str(exc)}
+                    print(f"warning: {name} {label}: {exc}", file=sys.stderr)
+                    continue
+                r = measure(frames, edges, times)
+                reference = extra is None or label == "linear"
+                if args.check_frames == "all" or (args.check_frames == "references" and reference):
+                    r["bad_frames"] = bad_frames(cli, src_path, frames, edges, tmp)
+                elif not reference:
+                    # ours verifies every frame exactly or fails (docs/CLI.md): 0 by construction
+                    r["bad_frames"] = [] if stats.get("verified", False) else None
+                else:
+                    r["bad_frames"] = None
+                if label == "linear" and "invalid_frames" in stats:
+                    r["engine_invalid_frames"] = stats["invalid_frames"]
+                    if r["bad_frames"] is not None and sorted(r["bad_frames"]) != sorted(
+                            k for k in stats["invalid_frames"] if 0 < k < len(frames) - 1):
+                        print(f"warning: {name}: check finds bad frames {r['bad_frames']}, the linear morph "
+                              f"reports {stats['invalid_frames']}", file=sys.stderr)
+                results[name][label] = r
+                frames_kept[(name, label)] = (frames, edges) if args.filmstrip else None
+            print(f"measured {name}", file=sys.stderr)
+
+        summary = summarize(results, labels)
+        target_rows = targets(results, summary, labels, corpus)
+        print(f"Motion quality of {len(corpus)} pairs in {folder}, {args.frames} frames"
+              + (f", ours with `{args.ours_args}`" if args.ours_args else "") + "\n")
+        print_report(corpus, results, labels, summary, target_rows, per_pair=not args.summary_only)
+
+        if args.json:
+            doc = {"corpus": str(folder), "frames": args.frames, "ours_args": args.ours_args, "methods": labels,
+                   "pairs": {name: {"kind": results[name]["_kind"], "vertices": results[name]["_n"],
+                                    **{m: results[name][m] for m in labels if m in results[name]}}
+                             for name, _, _ in corpus},
+                   "summary": summary,
+                   "targets": [{"target": text, **{m: {"pass": ok, "value": shown} for m, (ok, shown) in per.items()}}
+                               for text, per in target_rows]}
+            pathlib.Path(args.json).write_text(json.dumps(_finite(doc), indent=1, allow_nan=False) + "\n")
+
+        if args.filmstrip:
+            out = pathlib.Path(args.filmstrip)
+            out.mkdir(parents=True, exist_ok=True)
+            m = args.filmstrip_method or labels[0]
+            if m not in methods:
+                sys.exit(f"error: --filmstrip-method {m}: not one of {', '.join(labels)}")
+            ok = [name for name, _, _ in corpus if m in results[name] and "error" not in results[name][m]]
+            # worst = largest value, except the minimum size (smallest) and bad frames (most)
+            keys = [("edge_dev", 1), ("joint_dev_deg", 1), ("min_size", -1), ("unevenness", 1), ("beyond_deg", 1)]
+            for key, sign in keys:
+                worst = sorted(ok, key=lambda n: -sign * results[n][m][key])[:3]
+                for rank, name in enumerate(worst, 1):
+                    svg = out / f"{key}_{rank}_{name}.svg"
+                    if methods[m] is None:
+                        frames, edges = frames_kept[(name, m)]
+                        svg_filmstrip(svg, frames, edges, f"{name} {m}: {key} = {results[name][m][key]:.3f}")
+                    else:
+                        extra = methods[m] + (["--svg-compare-linear"] if m != "linear" else [])
+                        run_morph(cli, folder / f"{name}.source.json", folder / f"{name}.target.json",
+                                  pathlib.Path(tmp) / "morph.json", args.frames, extra + ["--svg", str(svg)])
+            print(f"\nfilmstrips of the worst 3 pairs per metric ({m}) in {out}", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
