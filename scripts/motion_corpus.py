@@ -10,7 +10,8 @@ plus manifest.json (kind, size and special tags of every pair) into a folder:
 
 Kinds (see docs/MOTION.md):
   glyph       hand-written stroke letters (trees and graphs with junctions) into a deformed
-              pose: bent strokes, moved junctions, thinner/bolder, italic, rotated, scaled
+              pose: bent strokes, moved junctions, thinner/bolder, italic, rotated, scaled;
+              and one letter into another (S into Z, C into U, T into Y, ...), resampled strokes
   skeleton    humanoid / quadruped / spider stick figures in two poses (forward kinematics:
               only joint angles and the root placement change, bone lengths are kept)
   polygon     stars, blobs and letter outlines in two shapes
@@ -173,6 +174,78 @@ def glyph_pair(letter, rng, gentle, big_turn=False):
                         shift=(rng.uniform(-1, 1), rng.uniform(-1, 1)))
     assert edges == edges2
     return src, tgt, edges, {"turn_deg": round(turn, 1)}
+
+
+# One letter into another, as font stroke data gives them: single-stroke letters are paths
+# (any two paths with as many vertices are compatible) and star-shaped letters are trees
+# with one junction; each arm is resampled at equal arc length to one vertex count, so the
+# vertex at a fraction of the stroke in one letter meets the same fraction in the other.
+# This is the paper's S-into-U kind of pair, where the motion is hardest to make natural.
+ARC = [(0.5 + 0.45 * math.cos(math.radians(a)), 0.5 + 0.45 * math.sin(math.radians(a)))
+       for a in range(40, 321, 20)]
+STROKES = {
+    "S": [LETTERS["S"][0][f"p{k}"] for k in range(11)],
+    "C": ARC,
+    "U": [(0, 1), (0, 0.3), (0.1, 0.1), (0.3, 0), (0.7, 0), (0.9, 0.1), (1, 0.3), (1, 1)],
+    "L": [(0, 1), (0, 0), (0.7, 0)],
+    "V": [(0, 1), (0.5, 0), (1, 1)],
+    "N": [(0, 0), (0, 1), (1, 0), (1, 1)],
+    "M": [(0, 0), (0, 1), (0.5, 0.4), (1, 1), (1, 0)],
+    "W": [(0, 1), (0.25, 0), (0.5, 0.6), (0.75, 0), (1, 1)],
+    "Z": [(0, 1), (1, 1), (0, 0), (1, 0)],
+    "2": [(0.05, 0.75), (0.2, 0.95), (0.5, 1), (0.8, 0.92), (0.9, 0.72), (0.75, 0.5), (0, 0), (1, 0)],
+    "J": [(0.9, 1), (0.9, 0.25), (0.75, 0.05), (0.5, 0), (0.25, 0.05), (0.1, 0.25)],
+    "7": [(0, 1), (1, 1), (0.4, 0)],
+}
+# star letters: the junction, then the arms counter-clockwise (matching arms in order)
+STARS = {
+    "T": ((0.5, 1), [[(1, 1)], [(0, 1)], [(0.5, 0)]]),
+    "Y": ((0.5, 0.5), [[(1, 1)], [(0, 1)], [(0.5, 0)]]),
+    "X": ((0.5, 0.5), [[(1, 1)], [(0, 1)], [(0, 0)], [(1, 0)]]),
+    "+": ((0.5, 0.5), [[(1, 0.5)], [(0.5, 1)], [(0, 0.5)], [(0.5, 0)]]),
+}
+CROSS_PAIRS = [("S", "Z"), ("C", "U"), ("L", "V"), ("N", "M"), ("W", "M"), ("Z", "2"), ("J", "U"),
+               ("7", "L"), ("T", "Y"), ("X", "+")]
+
+
+def resample(polyline, count):
+    """`count` points at equal arc length along the polyline, both ends included."""
+    p = np.asarray(polyline, dtype=float)
+    seg = np.linalg.norm(np.diff(p, axis=0), axis=1)
+    s = np.concatenate([[0], np.cumsum(seg)])
+    u = np.linspace(0, s[-1], count)
+    return np.stack([np.interp(u, s, p[:, 0]), np.interp(u, s, p[:, 1])], axis=1)
+
+
+def cross_letter(letter, counts):
+    """A path letter with counts[0] vertices, or a star letter with counts[k] vertices on arm k
+    (the junction not counted)."""
+    if letter in STROKES:
+        p = resample(STROKES[letter], counts[0])
+        return p, [(i, i + 1) for i in range(len(p) - 1)]
+    centre, arms = STARS[letter]
+    pts, edges = [centre], []
+    for arm, k in zip(arms, counts):
+        q = resample([centre] + arm, k + 1)[1:]
+        first = len(pts)
+        pts += [tuple(x) for x in q]
+        edges.append((0, first))
+        edges += [(first + i, first + i + 1) for i in range(k - 1)]
+    return np.array(pts, float), edges
+
+
+def cross_glyph_pair(a, b, rng, gentle):
+    arms = 1 if a in STROKES else len(STARS[a][1])
+    counts = [rng.randrange(24, 61)] if arms == 1 else [rng.randrange(6, 16)] * arms
+    src, edges = cross_letter(a, counts)
+    tgt, edges2 = cross_letter(b, counts)
+    assert edges == edges2
+    jitter = 0.008 * gentle
+    src = src + np.array([[rng.uniform(-jitter, jitter) for _ in range(2)] for _ in src])
+    tgt = tgt + np.array([[rng.uniform(-jitter, jitter) for _ in range(2)] for _ in tgt])
+    turn = rng.uniform(-30, 30) * gentle
+    tgt = similarity(tgt, turn, rng.uniform(0.7, 1.4), (rng.uniform(-1, 1), rng.uniform(-1, 1)))
+    return src, tgt, edges, {"letters": f"{a}->{b}", "turn_deg": round(turn, 1)}
 
 
 # ---------------------------------------------------------------------------
@@ -458,6 +531,9 @@ def main(argv=None):
         jobs.append(("glyph", f"glyph_{letter}", lambda r, g, L=letter: glyph_pair(L, r, g)))
     for letter in "AKRY":
         jobs.append(("glyph", f"glyph_{letter}_turned", lambda r, g, L=letter: glyph_pair(L, r, g, big_turn=True)))
+    for a, b in CROSS_PAIRS:
+        tag = {"+": "plus"}.get(b, b)
+        jobs.append(("glyph", f"glyph_{a}_to_{tag}", lambda r, g, A=a, B=b: cross_glyph_pair(A, B, r, g)))
     for kind, k in (("humanoid", 3), ("quadruped", 2), ("spider", 1)):
         for i in range(k):
             jobs.append(("skeleton", f"skeleton_{kind}_{i + 1}", lambda r, g, K=kind: skeleton_pair(K, r, g)))
