@@ -54,9 +54,11 @@ def evaluated_depsgraph(context):
     back after evaluating; since Blender 4.x it is runtime data that undo
     does not restore. Adjust Last Operation undoes the bake and calls execute
     again before anything re-evaluates, so the original objects' matrix_world
-    then reads the identity (measured in 4.3 and 5.2: the redone result sat at
-    the origin). evaluated_depsgraph_get() evaluates what is tagged first,
-    and the evaluated object carries the matrix that is shown."""
+    then reads the identity (measured in 4.3 and 5.2 under Xvfb: the redone
+    result sat at the meshes' local coordinates, 2.5 off; 3.4 keeps the
+    matrix in the file and was right). evaluated_depsgraph_get() evaluates
+    what is tagged first, and the evaluated object carries the matrix that is
+    shown."""
     return context.evaluated_depsgraph_get()
 
 

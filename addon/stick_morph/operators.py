@@ -128,12 +128,12 @@ def show_in_status_bar(context, text):
     under Xvfb), so every version gets the text; where the banner shows too,
     both say the same. The workspace's status text is drawn without a timer;
     an app timer clears it, as Blender's modal operators clear theirs."""
+    global _clear_status
     if bpy.app.background:
         return
     workspace = getattr(context, "workspace", None)
     if workspace is None:
         return
-    global _clear_status
     workspace.status_text_set(text)
     name = workspace.name
 
