@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
-# Builds the Blender add-on zip and runs its tests inside headless Blender.
+# Builds the Blender add-on package and runs its tests inside headless Blender
+# (the Blender on PATH: the host's, or a chroot's under scripts/blender_chroot.sh).
 #
 #   scripts/blender_tests.sh [pytest args]
 #
 # 1. /usr/bin/python3 build_addon.py: builds the native module for Blender's
 #    Python (in $STICKMORPH_BUILD_DIR, default build-addon/) and writes
-#    dist/stick_morph-<version>.zip.
+#    dist/stick_morph-<version>-blender<M.m>-cp<XY>-linux-x64.zip (a legacy
+#    add-on before Blender 4.2, an extension from 4.2; docs/BLENDER.md).
 # 2. tests/blender/run_pytest.py in `blender -b --factory-startup`: installs
-#    and enables that zip in a temporary user config, bakes, checks, renders.
+#    and enables that package in a temporary user config, bakes, checks, renders.
 # Exits non-zero if the build or any test fails; pytest prints its summary line.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
