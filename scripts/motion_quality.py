@@ -398,6 +398,24 @@ def print_report(corpus, results, methods, summary, target_rows, per_pair=True, 
               f"{s['beyond_deg']['median']:.1f} / {s['beyond_deg']['p90']:.1f} / {s['beyond_deg']['max']:.1f}",
               f"{s['bad_frames']} ({s['pairs_with_bad_frames']})" + ("" if s["bad_frames_checked"] else " unchecked")])
     print(file=file)
+    # medians per kind of pair: where a method's motion goes wrong
+    kinds = sorted({results[name]["_kind"] for name, _, _ in corpus})
+    if len(kinds) > 1:
+        line(["kind", "method", "pairs", "edge dev med", "joint dev ° med", "min size min", "unevenness med",
+              "beyond ° max", "bad frames"])
+        line(["---"] * 9)
+        for kind in kinds:
+            for m in methods:
+                rows = [results[name][m] for name, k, _ in corpus if k == kind and m in results[name]
+                        and "error" not in results[name][m]]
+                if not rows:
+                    continue
+                line([kind, m, str(len(rows)), f"{np.median([r['edge_dev'] for r in rows]):.3f}",
+                      f"{np.median([r['joint_dev_deg'] for r in rows]):.2f}",
+                      f"{min(r['min_size'] for r in rows):.3f}", f"{np.median([r['unevenness'] for r in rows]):.2f}",
+                      f"{max(r['beyond_deg'] for r in rows):.1f}",
+                      str(sum(len(r["bad_frames"] or []) for r in rows))])
+        print(file=file)
     line(["target"] + methods)
     line(["---"] * (len(methods) + 1))
     for text, per in target_rows:
@@ -550,6 +568,11 @@ def main(argv=None):
             ok = [name for name, _, _ in corpus if m in results[name] and "error" not in results[name][m]]
             # worst = largest value, except the minimum size (smallest) and bad frames (most)
             keys = [("edge_dev", 1), ("joint_dev_deg", 1), ("min_size", -1), ("unevenness", 1), ("beyond_deg", 1)]
+            # an earlier run's worst pairs are other files: remove them (only names this
+            # script writes) so the folder shows one run
+            for key, _ in keys:
+                for old in out.glob(f"{key}_[123]_*.svg"):
+                    old.unlink()
             for key, sign in keys:
                 worst = sorted(ok, key=lambda n: -sign * results[n][m][key])[:3]
                 for rank, name in enumerate(worst, 1):
