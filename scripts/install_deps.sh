@@ -1,5 +1,8 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages that building, testing and the demo need.
+# Installs the Debian packages that building, testing and the demo need:
+# Debian 12 (the tested host, Blender 3.4.1), and Debian 13 or later, whose
+# packages differ in two places: no clang-14 (their default clang instead)
+# and Catch2 v3 instead of v2 (tests/cpp/catch.h serves both).
 #
 # Quiet and quick when everything is present, so every other script can call
 # it first. As root it installs what is missing; otherwise it prints the
@@ -21,12 +24,18 @@ packages=(
   python3-numpy
   python3-pytest
   python3-matplotlib  # the plots of BENCHMARKS.md (scripts/make_benchmarks.py)
-  clang-14            # scripts/sanitize.sh: clang++-14 with ASan, UBSan, libFuzzer
-  libclang-rt-14-dev  # the sanitizer and libFuzzer runtimes of clang 14
   libegl1 libegl-mesa0  # headless Workbench/EEVEE render through surfaceless EGL
   xvfb xauth          # the GUI test of Adjust Last Operation (xvfb-run)
   debootstrap         # scripts/blender_chroot.sh: Debian 13 and sid for Blender 4.3 and 5.2
 )
+# scripts/sanitize.sh: clang with ASan, UBSan and libFuzzer, and their
+# runtimes. Debian 12's default clang is 14, packaged under its version.
+codename=$(. /etc/os-release 2>/dev/null && echo "${VERSION_CODENAME:-}")
+if [[ "$codename" == bookworm ]]; then
+  packages+=(clang-14 libclang-rt-14-dev)
+else
+  packages+=(clang libclang-rt-dev)
+fi
 
 missing=()
 for package in "${packages[@]}"; do

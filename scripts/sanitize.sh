@@ -38,11 +38,16 @@ section "Dependencies"
 bash scripts/install_deps.sh
 echo "all Debian packages present"
 
-section "Configure ($build_dir: clang, ASan + UBSan, libFuzzer)"
+# clang++-14 on Debian 12 (scripts/install_deps.sh), the default clang++ on
+# later releases, which package no clang 14.
+clang=$(command -v clang++-14 || command -v clang++ || true)
+[[ -n "$clang" ]] || { echo "sanitize.sh: no clang++ found (scripts/install_deps.sh installs it)" >&2; exit 2; }
+
+section "Configure ($build_dir: $(basename "$clang"), ASan + UBSan, libFuzzer)"
 # RelWithDebInfo: optimised like the release build (so the suite runs in
 # reasonable time) with line numbers in sanitizer stack traces.
 cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_COMPILER=clang++-14 \
+  -DCMAKE_CXX_COMPILER="$clang" \
   -DSTICKMORPH_SANITIZE=ON -DSTICKMORPH_BUILD_FUZZERS=ON \
   -DSTICKMORPH_BUILD_PYTHON=OFF -DSTICKMORPH_BUILD_TESTS=ON
 

@@ -1,11 +1,11 @@
-#include <catch2/catch.hpp>
+#include "catch.h"
 
 #include "figures.h"
 #include "stickmorph/compatibility.h"
 
 using namespace stickmorph;
 using namespace stickmorph::test;
-using Catch::Matchers::Contains;
+using stickmorph_test::Contains;
 
 namespace {
 

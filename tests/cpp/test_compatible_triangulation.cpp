@@ -1,4 +1,4 @@
-#include <catch2/catch.hpp>
+#include "catch.h"
 
 #include "figures.h"
 #include "polygons.h"
@@ -7,7 +7,7 @@
 
 using namespace stickmorph;
 using namespace stickmorph::test;
-using Catch::Matchers::Contains;
+using stickmorph_test::Contains;
 
 namespace {
 

@@ -16,7 +16,7 @@
 // An intended change is one command: scripts/update_golden.sh (or
 // STICKMORPH_UPDATE_GOLDEN=1 build/stickmorph_tests "[golden]") rewrites the
 // file from the current engine; review and commit the diff.
-#include <catch2/catch.hpp>
+#include "catch.h"
 
 #include <algorithm>
 #include <cstdlib>

@@ -1,4 +1,4 @@
-#include <catch2/catch.hpp>
+#include "catch.h"
 
 #include <cmath>
 #include <cstdint>
@@ -10,9 +10,9 @@
 #include "stickmorph/json.h"
 
 using namespace stickmorph;
-using Catch::Matchers::Contains;
-using Catch::Matchers::Equals;
-using Catch::Matchers::StartsWith;
+using stickmorph_test::Contains;
+using stickmorph_test::Equals;
+using stickmorph_test::StartsWith;
 
 namespace {
 

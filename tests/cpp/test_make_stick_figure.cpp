@@ -1,4 +1,4 @@
-#include <catch2/catch.hpp>
+#include "catch.h"
 
 #include <cmath>
 #include <limits>
@@ -8,8 +8,8 @@
 
 using namespace stickmorph;
 using namespace stickmorph::test;
-using Catch::Matchers::Contains;
-using Catch::Matchers::Equals;
+using stickmorph_test::Contains;
+using stickmorph_test::Equals;
 
 namespace {
 

@@ -1,6 +1,6 @@
 // End to end: Algorithm 3 (triangulate_figures) and the Floater-Gotsman morph
 // (morph_triangulation) on whole stick figures, every frame verified.
-#include <catch2/catch.hpp>
+#include "catch.h"
 
 #include <algorithm>
 #include <cmath>

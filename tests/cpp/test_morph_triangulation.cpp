@@ -1,4 +1,4 @@
-#include <catch2/catch.hpp>
+#include "catch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,7 @@
 
 using namespace stickmorph;
 using namespace stickmorph::test;
-using Catch::Matchers::Contains;
+using stickmorph_test::Contains;
 
 namespace {
 

@@ -1,7 +1,7 @@
 // Property tests at scale: random compatible pairs of every kind and
 // placement (random_pairs.h) through the whole pipeline, every frame
 // verified exactly. The long mode is stickmorph_random_pairs.
-#include <catch2/catch.hpp>
+#include "catch.h"
 
 #include <chrono>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include <catch2/catch.hpp>
+#include "catch.h"
 
 #include <functional>
 #include <string>
@@ -8,10 +8,10 @@
 #include "stickmorph/figure_io.h"
 
 using namespace stickmorph;
-using Catch::Matchers::Contains;
-using Catch::Matchers::EndsWith;
-using Catch::Matchers::Equals;
-using Catch::Matchers::StartsWith;
+using stickmorph_test::Contains;
+using stickmorph_test::EndsWith;
+using stickmorph_test::Equals;
+using stickmorph_test::StartsWith;
 
 namespace {
 

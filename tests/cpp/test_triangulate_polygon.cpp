@@ -1,4 +1,4 @@
-#include <catch2/catch.hpp>
+#include "catch.h"
 
 #include <set>
 
@@ -8,7 +8,7 @@
 
 using namespace stickmorph;
 using namespace stickmorph::test;
-using Catch::Matchers::Contains;
+using stickmorph_test::Contains;
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include <catch2/catch.hpp>
+#include "catch.h"
 
 #include <limits>
 
@@ -7,8 +7,8 @@
 
 using namespace stickmorph;
 using namespace stickmorph::test;
-using Catch::Matchers::Contains;
-using Catch::Matchers::StartsWith;
+using stickmorph_test::Contains;
+using stickmorph_test::StartsWith;
 
 namespace {
 
