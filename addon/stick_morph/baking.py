@@ -29,8 +29,6 @@ jump. So the result uses absolute keys.
 
 from __future__ import annotations
 
-import time
-
 import bpy
 import numpy as np
 
@@ -398,9 +396,3 @@ def select_only(context, obj):
             other.select_set(False)
     obj.select_set(True)
     context.view_layer.objects.active = obj
-
-
-def timed(function, *args, **kwargs):
-    start = time.perf_counter()
-    value = function(*args, **kwargs)
-    return value, (time.perf_counter() - start) * 1000.0

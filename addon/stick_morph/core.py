@@ -28,8 +28,7 @@ from __future__ import annotations
 import math
 import os
 import re
-import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -41,8 +40,6 @@ from .common import (DEFAULT_PLANARITY_TOLERANCE, MAX_ENCLOSURE_SIDES, MAX_ENGIN
 
 PLANES = ("AUTO", "XY", "XZ", "YZ")
 EASINGS = ("LINEAR", "EASE_IN_OUT")
-STEINER_METHODS = ("improved", "sg2001", "aronov")
-WEIGHTS = ("mvc", "uniform", "floater")
 
 # Orthonormal (u, v) of the axis planes; n = u x v. XZ is seen from the front
 # (looking along +Y), YZ from the right (looking along -X), as in Blender's
@@ -56,7 +53,6 @@ _AXIS_PLANES = {
 # With easing, the frames are picked from a finer uniform morph of this many
 # samples per output frame interval (see ease_sample_indices).
 EASE_OVERSAMPLING = 8
-
 
 
 @dataclass
@@ -84,33 +80,26 @@ class PreparedPair:
     source_h: np.ndarray  # (V,) heights above the plane
     target_h: np.ndarray  # (V,)
     edges: np.ndarray  # (E, 2) int64, the source mesh's edges in mesh order
-    deviation: float  # the largest distance of a vertex from its figure's plane
     size: float  # diagonal of the common bounding box (world units)
 
 
 @dataclass
 class MorphResult:
-    times: np.ndarray  # (N,) the (eased) morph time of each output frame
-    frames_xy: np.ndarray  # (N, V, 2) engine frames, in the plane
     frames_world: np.ndarray  # (N, V, 3) float64, world space
     triangulation: dict | None
     stats: dict
-    engine_frames: int  # frames the engine computed (more than N with easing)
-    sample_indices: np.ndarray  # (N,) which engine frame each output frame is
-    milliseconds: float = 0.0
-    extra: dict = field(default_factory=dict)
 
 
 # ---------------------------------------------------------------- engine ----
 
-def load_engine(blender: str | None = None):
+def load_engine():
     """The native `stickmorph` module: the copy shipped inside this package,
     else one on sys.path (a development build). Raises StickMorphError saying
     which Python the module was built for and how to rebuild it."""
     try:
         return dependencies.import_engine(__package__)
     except (ImportError, OSError):
-        status = dependencies.check(os.path.dirname(os.path.abspath(__file__)), __package__, blender)
+        status = dependencies.check(os.path.dirname(os.path.abspath(__file__)), __package__)
         if status.engine_error is None:  # loaded on the second try (a transient failure)
             return dependencies.import_engine(__package__)
         raise StickMorphError(status.message()) from None
@@ -176,10 +165,9 @@ def fit_plane(source_world: np.ndarray, target_world: np.ndarray, plane: str = "
     axis_u, axis_v = (np.array(a) for a in _AXIS_PLANES[nearest])
     if np.cross(axis_u, axis_v) @ normal < 0:
         normal = -normal
-    u = axis_u - (axis_u @ normal) * normal
-    if np.linalg.norm(u) < 1e-6:  # cannot happen for the nearest plane; be safe
-        u = direction
-    u = _unit(u)
+    # |u| >= 1/sqrt(3): the nearest plane's normal axis holds at least 1/3 of
+    # normal's squared length, so axis_u, another axis, at most 2/3.
+    u = _unit(axis_u - (axis_u @ normal) * normal)
     v = np.cross(normal, u)
     return Plane(origin, u, _unit(v), normal, "AUTO")
 
@@ -324,7 +312,7 @@ def prepare_pair(source_world, source_edges, source_faces: int, source_name: str
             f"{limit:.3g}, {planarity_tolerance:g} of the size {size:.6g})"
             + ("" if plane == "AUTO" else "; try plane AUTO"))
     edges = np.asarray(source_edges, dtype=np.int64).reshape(-1, 2)
-    return PreparedPair(fitted, source_xy, target_xy, source_h, target_h, edges, worst[0], size)
+    return PreparedPair(fitted, source_xy, target_xy, source_h, target_h, edges, size)
 
 
 def _figure_name(message: str, source_name: str, target_name: str) -> str:
@@ -391,22 +379,19 @@ def compute_morph(prepared: PreparedPair, frame_count: int, *, steiner: str = "i
         raise StickMorphError(f"unknown easing {easing!r}")
     engine = load_engine()
     m = engine_frame_count(frame_count, easing)
-    start = time.perf_counter()
     try:
         result = engine.morph(prepared.source_xy, prepared.target_xy, prepared.edges, frames=m,
                               steiner=steiner, weights=weights, enclosure_sides=enclosure_sides,
                               method="barycentric", verify=verify)
     except (engine.StickMorphError, engine.InternalError) as e:
         raise StickMorphError(engine_error_message(e, source_name, target_name)) from e
-    milliseconds = (time.perf_counter() - start) * 1000.0
     indices = ease_sample_indices(frame_count, easing)
     frames_xy = np.asarray(result["frames"])[indices]
     times = np.asarray(result["times"])[indices]
     heights = ((1.0 - times)[:, None] * prepared.source_h[None, :]
                + times[:, None] * prepared.target_h[None, :])
     frames_world = unproject(frames_xy, heights, prepared.plane)
-    return MorphResult(times, frames_xy, frames_world, result["triangulation"], result["stats"], m,
-                       indices, milliseconds)
+    return MorphResult(frames_world, result["triangulation"], result["stats"])
 
 
 def triangulation_world(triangulation: dict, prepared: PreparedPair) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -86,8 +86,6 @@ class Dependencies:
 
     numpy_error: str | None
     engine_error: str | None
-    numpy_version: str | None = None
-    engine_file: str | None = None
     build_info: dict = field(default_factory=lambda: {key: UNKNOWN for key in BUILD_INFO_KEYS})
     module_files: list = field(default_factory=list)
     python: str = UNKNOWN
@@ -163,19 +161,16 @@ def check(package_dir: str, package: str | None, blender: str | None = None) -> 
     or OSError. package_dir is the add-on's folder (for build_info.json and
     the module file names), package its import name (None: only sys.path)."""
     python, tag = this_python()
-    numpy_error = numpy_version = None
+    numpy_error = None
     try:
-        import numpy
-        numpy_version = getattr(numpy, "__version__", UNKNOWN)
+        import numpy  # noqa: F401
     except (ImportError, OSError) as error:
         numpy_error = _error_text(error)
-    engine_error = engine_file = None
+    engine_error = None
     try:
-        engine = import_engine(package)
-        engine_file = getattr(engine, "__file__", None)
+        import_engine(package)
     except (ImportError, OSError) as error:
         engine_error = _error_text(error)
-    return Dependencies(numpy_error=numpy_error, engine_error=engine_error, numpy_version=numpy_version,
-                        engine_file=engine_file, build_info=read_build_info(package_dir),
-                        module_files=module_files(package_dir), python=python, python_tag=tag,
-                        blender=blender or "/path/to/blender")
+    return Dependencies(numpy_error=numpy_error, engine_error=engine_error,
+                        build_info=read_build_info(package_dir), module_files=module_files(package_dir),
+                        python=python, python_tag=tag, blender=blender or "/path/to/blender")
