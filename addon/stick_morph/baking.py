@@ -8,7 +8,8 @@ no custom node types.
 
 Shape keys: absolute keys on an eval_time F-curve, chosen by measurement
 over one relative key per frame with constant interpolation. Measured with
-tests/blender/measure_shape_keys.py in Blender 3.4.1 on this 2-core machine
+tests/blender/measure_shape_keys.py (which holds the relative variant; the
+add-on never bakes it) in Blender 3.4.1 on this 2-core machine
 (bake = building keys and keyframes; step = scene.frame_set per frame with the
 shape keys evaluated; error = largest difference from the baked frame):
 
@@ -39,8 +40,8 @@ ROLE = "stick_morph_role"
 SOURCE = "stick_morph_source"
 TARGET = "stick_morph_target"
 
-# Enum indices for Keyframe.interpolation in foreach_set.
-_INTERPOLATION = {"CONSTANT": 0, "LINEAR": 1}
+# The enum index of LINEAR in Keyframe.interpolation, for foreach_set.
+_LINEAR = 1
 
 
 # ------------------------------------------------------------------ read ----
@@ -117,8 +118,8 @@ def find_fcurve(anim_data, data_path):
     return legacy.find(data_path) if legacy is not None else None
 
 
-def _fill_fcurve(fcurve, frames, values, interpolation):
-    """Makes fcurve hold exactly the given keyframes (it holds one already)."""
+def _fill_fcurve(fcurve, frames, values):
+    """Makes fcurve hold exactly the given LINEAR keyframes (it holds one already)."""
     points = fcurve.keyframe_points
     missing = len(frames) - len(points)
     if missing > 0:
@@ -129,7 +130,7 @@ def _fill_fcurve(fcurve, frames, values, interpolation):
     points.foreach_set("co", co)
     points.foreach_set("handle_left", co)
     points.foreach_set("handle_right", co)
-    points.foreach_set("interpolation", np.full(len(frames), _INTERPOLATION[interpolation], dtype=np.int32))
+    points.foreach_set("interpolation", np.full(len(frames), _LINEAR, dtype=np.int32))
     fcurve.update()
 
 
@@ -162,28 +163,7 @@ def bake_absolute_keys(obj, frames_local, frame_start, progress=None):
     key.eval_time = float(positions[0])
     key.keyframe_insert("eval_time", frame=frame_start)
     fcurve = find_fcurve(key.animation_data, "eval_time")
-    _fill_fcurve(fcurve, frame_start + np.arange(count, dtype=np.float64), positions, "LINEAR")
-    return key
-
-
-def bake_relative_keys(obj, frames_local, frame_start, progress=None):
-    """The alternative measured against bake_absolute_keys (see the module
-    docstring): a basis (frame 0) and one relative key per further frame whose
-    value is 1 on its frame only, with constant interpolation."""
-    count = len(frames_local)
-    obj.shape_key_add(name="Frame 0000", from_mix=False)
-    key = obj.data.shape_keys
-    for k in range(1, count):
-        block = obj.shape_key_add(name=f"Frame {k:04d}", from_mix=False)
-        block.data.foreach_set("co", np.asarray(frames_local[k], dtype=np.float32).ravel())
-        block.value = 0.0
-        block.keyframe_insert("value", frame=frame_start + k - 1)
-        fcurve = find_fcurve(key.animation_data, block.path_from_id("value"))
-        frames = [frame_start + k - 1, frame_start + k] + ([frame_start + k + 1] if k + 1 < count else [])
-        values = [0.0, 1.0] + ([0.0] if k + 1 < count else [])
-        _fill_fcurve(fcurve, np.array(frames, dtype=np.float64), np.array(values), "CONSTANT")
-        if progress and k % 16 == 0:
-            progress(k)
+    _fill_fcurve(fcurve, frame_start + np.arange(count, dtype=np.float64), positions)
     return key
 
 
@@ -342,7 +322,7 @@ def previous_results(source_name, target_name):
 
 
 def build_result(context, source, target, prepared, morph, *, frame_start, renderable,
-                 tube_radius_factor, show_triangulation, shape_keys="ABSOLUTE", report_progress=None):
+                 tube_radius_factor, show_triangulation, report_progress=None):
     """Creates the result (and helper) objects; returns (result object, Created).
     On failure everything created is removed and the exception re-raised."""
     created = Created()
@@ -360,8 +340,7 @@ def build_result(context, source, target, prepared, morph, *, frame_start, rende
         obj[SOURCE] = source.name
         obj[TARGET] = target.name
         collection.objects.link(obj)
-        bake = bake_absolute_keys if shape_keys == "ABSOLUTE" else bake_relative_keys
-        bake(obj, frames_local, frame_start, report_progress)
+        bake_absolute_keys(obj, frames_local, frame_start, report_progress)
         if renderable:
             group, made = add_tubes(obj, core.tube_radius(prepared.size, tube_radius_factor))
             if made:
