@@ -321,10 +321,11 @@ def previous_results(source_name, target_name):
             and obj.get(SOURCE) == source_name and obj.get(TARGET) == target_name]
 
 
-def build_result(context, source, target, prepared, morph, *, frame_start, renderable,
-                 tube_radius_factor, show_triangulation, report_progress=None):
-    """Creates the result (and helper) objects; returns (result object, Created).
-    On failure everything created is removed and the exception re-raised."""
+def build_result(context, source, target, prepared, morph, settings, report_progress=None):
+    """Creates the result (and helper) objects from a computed morph, as
+    settings (a core.BakeSettings) say: frame_start, renderable, tube_radius,
+    show_triangulation. Returns (result object, Created). On failure
+    everything created is removed and the exception re-raised."""
     created = Created()
     collection = context.collection or context.scene.collection
     name = core.result_name(source.name, target.name)
@@ -340,12 +341,12 @@ def build_result(context, source, target, prepared, morph, *, frame_start, rende
         obj[SOURCE] = source.name
         obj[TARGET] = target.name
         collection.objects.link(obj)
-        bake_absolute_keys(obj, frames_local, frame_start, report_progress)
-        if renderable:
-            group, made = add_tubes(obj, core.tube_radius(prepared.size, tube_radius_factor))
+        bake_absolute_keys(obj, frames_local, settings.frame_start, report_progress)
+        if settings.renderable:
+            group, made = add_tubes(obj, core.tube_radius(prepared.size, settings.tube_radius))
             if made:
                 created.node_group = group
-        if show_triangulation and morph.triangulation is not None:
+        if settings.show_triangulation and morph.triangulation is not None:
             source_nodes, target_nodes, triangles = core.triangulation_world(morph.triangulation, prepared)
             helper_mesh = bpy.data.meshes.new(name + "_triangulation")
             helper_mesh.from_pydata((source_nodes - origin).tolist(), [], triangles.tolist())

@@ -33,10 +33,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import dependencies
-# The limits and the error type live in common.py, which imports without
-# numpy; they are part of core's interface too.
-from .common import (DEFAULT_PLANARITY_TOLERANCE, MAX_ENCLOSURE_SIDES, MAX_ENGINE_FRAMES,  # noqa: F401
-                     StickMorphError)
+# The limits, the settings and the error type live in common.py, which
+# imports without numpy; they are part of core's interface too.
+from .common import MAX_ENCLOSURE_SIDES, MAX_ENGINE_FRAMES, BakeSettings, StickMorphError
 
 PLANES = ("AUTO", "XY", "XZ", "YZ")
 EASINGS = ("LINEAR", "EASE_IN_OUT")
@@ -74,6 +73,8 @@ class Plane:
 class PreparedPair:
     """Two figures ready for the engine."""
 
+    source_name: str  # the objects' names, for the messages
+    target_name: str
     plane: Plane
     source_xy: np.ndarray  # (V, 2) float64
     target_xy: np.ndarray  # (V, 2) float64
@@ -265,10 +266,11 @@ def ease_sample_indices(frame_count: int, easing: str) -> np.ndarray:
 
 def prepare_pair(source_world, source_edges, source_faces: int, source_name: str,
                  target_world, target_edges, target_faces: int, target_name: str,
-                 plane: str = "AUTO",
-                 planarity_tolerance: float = DEFAULT_PLANARITY_TOLERANCE) -> PreparedPair:
+                 settings: BakeSettings) -> PreparedPair:
     """Checks two meshes (world-space vertices, edges, face counts) and projects
-    them onto their common plane. Raises StickMorphError with a user message."""
+    them onto their common plane (settings.plane, settings.planarity_tolerance).
+    Raises StickMorphError with a user message."""
+    plane, planarity_tolerance = settings.plane, settings.planarity_tolerance
     source_world = np.asarray(source_world, dtype=np.float64).reshape(-1, 3)
     target_world = np.asarray(target_world, dtype=np.float64).reshape(-1, 3)
     for name, faces in ((source_name, source_faces), (target_name, target_faces)):
@@ -312,7 +314,7 @@ def prepare_pair(source_world, source_edges, source_faces: int, source_name: str
             f"{limit:.3g}, {planarity_tolerance:g} of the size {size:.6g})"
             + ("" if plane == "AUTO" else "; try plane AUTO"))
     edges = np.asarray(source_edges, dtype=np.int64).reshape(-1, 2)
-    return PreparedPair(fitted, source_xy, target_xy, source_h, target_h, edges, size)
+    return PreparedPair(source_name, target_name, fitted, source_xy, target_xy, source_h, target_h, edges, size)
 
 
 def _figure_name(message: str, source_name: str, target_name: str) -> str:
@@ -346,9 +348,10 @@ def engine_error_message(error: Exception, source_name: str, target_name: str) -
     return f"stickmorph: {text}"
 
 
-def check_pair(prepared: PreparedPair, source_name: str, target_name: str) -> None:
+def check_pair(prepared: PreparedPair) -> None:
     """Engine validation and compatibility, with messages naming the objects.
     Raises StickMorphError."""
+    source_name, target_name = prepared.source_name, prepared.target_name
     engine = load_engine()
     try:
         report = engine.check_compatibility(prepared.source_xy, prepared.target_xy, prepared.edges)
@@ -366,11 +369,10 @@ def check_pair(prepared: PreparedPair, source_name: str, target_name: str) -> No
             f"incompatible figures '{source_name}' and '{target_name}'{where}: {report.reason}")
 
 
-def compute_morph(prepared: PreparedPair, frame_count: int, *, steiner: str = "improved",
-                  weights: str = "mvc", enclosure_sides: int = 6, easing: str = "LINEAR",
-                  source_name: str = "source", target_name: str = "target",
-                  verify: bool = True) -> MorphResult:
-    """The morph's frames in world space. Raises StickMorphError."""
+def compute_morph(prepared: PreparedPair, settings: BakeSettings) -> MorphResult:
+    """The morph's frames in world space. Raises StickMorphError, before any
+    engine work for settings out of range."""
+    frame_count, enclosure_sides, easing = settings.frame_count, settings.enclosure_sides, settings.easing
     if not 2 <= frame_count <= MAX_ENGINE_FRAMES:
         raise StickMorphError(f"the number of frames must be between 2 and {MAX_ENGINE_FRAMES}, got {frame_count}")
     if not 3 <= enclosure_sides <= MAX_ENCLOSURE_SIDES:
@@ -380,11 +382,13 @@ def compute_morph(prepared: PreparedPair, frame_count: int, *, steiner: str = "i
     engine = load_engine()
     m = engine_frame_count(frame_count, easing)
     try:
+        # verify: easing picks engine frames instead of interpolating
+        # (ease_sample_indices) because each of them is verified exactly.
         result = engine.morph(prepared.source_xy, prepared.target_xy, prepared.edges, frames=m,
-                              steiner=steiner, weights=weights, enclosure_sides=enclosure_sides,
-                              method="barycentric", verify=verify)
+                              steiner=settings.steiner, weights=settings.weights,
+                              enclosure_sides=enclosure_sides, method="barycentric", verify=True)
     except (engine.StickMorphError, engine.InternalError) as e:
-        raise StickMorphError(engine_error_message(e, source_name, target_name)) from e
+        raise StickMorphError(engine_error_message(e, prepared.source_name, prepared.target_name)) from e
     indices = ease_sample_indices(frame_count, easing)
     frames_xy = np.asarray(result["frames"])[indices]
     times = np.asarray(result["times"])[indices]

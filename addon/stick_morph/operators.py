@@ -23,7 +23,8 @@ from bpy.props import IntProperty, StringProperty
 
 from . import dependencies
 from .common import StickMorphError
-from .preferences import OPTION_NAMES, addon_preferences, option_properties
+from .common import BakeSettings
+from .preferences import OPTION_NAMES, addon_preferences, bake_settings, option_properties
 
 PACKAGE_DIR = os.path.dirname(os.path.abspath(__file__))
 
@@ -167,8 +168,8 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
                                  description="Source object name (empty: the selected non-active mesh)"),
         "target": StringProperty(name="Target", options={"SKIP_SAVE"},
                                  description="Target object name (empty: the active object)"),
-        "frame_start": IntProperty(name="Start", description="Frame showing the source", default=1,
-                                   options=set()),
+        "frame_start": IntProperty(name="Start", description="Frame showing the source",
+                                   default=BakeSettings.frame_start, options=set()),
         **option_properties(),
     }
 
@@ -211,6 +212,7 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
         from . import baking, core
 
         started = time.perf_counter()
+        settings = bake_settings(self)
         source, target = resolve_pair(context, self.source.strip(), self.target.strip())
         # Redo re-runs with these names even if the selection changed meanwhile.
         self.source, self.target = source.name, target.name
@@ -219,25 +221,20 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
         target_world, target_edges, target_faces = baking.mesh_world_data(target, depsgraph)
         progress.stage("read", 5)
         prepared = core.prepare_pair(source_world, source_edges, source_faces, source.name,
-                                     target_world, target_edges, target_faces, target.name,
-                                     plane=self.plane, planarity_tolerance=self.planarity_tolerance)
-        core.check_pair(prepared, source.name, target.name)
+                                     target_world, target_edges, target_faces, target.name, settings)
+        core.check_pair(prepared)
         progress.stage("check", 15)
-        morph = core.compute_morph(prepared, self.frame_count, steiner=self.steiner, weights=self.weights,
-                                   enclosure_sides=self.enclosure_sides, easing=self.easing,
-                                   source_name=source.name, target_name=target.name)
+        morph = core.compute_morph(prepared, settings)
         progress.stage("morph", 60)
         previous = baking.previous_results(source.name, target.name)
-        count = self.frame_count
+        count = settings.frame_count
 
         def frame_done(k):
             progress.update(60 + int(35 * k / max(count, 1)))
 
         try:
-            result, created = baking.build_result(
-                context, source, target, prepared, morph, frame_start=self.frame_start,
-                renderable=self.renderable, tube_radius_factor=self.tube_radius,
-                show_triangulation=self.show_triangulation, report_progress=frame_done)
+            result, created = baking.build_result(context, source, target, prepared, morph, settings,
+                                                  report_progress=frame_done)
         except Exception as error:  # build_result removed what it made
             raise StickMorphError(f"building the result failed: {error}") from error
         for obj in previous:
@@ -247,20 +244,20 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
             if obj.name != name and name not in bpy.data.objects:
                 obj.name = name
                 obj.data.name = name
-        if self.set_frame_range:
-            context.scene.frame_start = self.frame_start
-            context.scene.frame_end = self.frame_start + count - 1
+        if settings.set_frame_range:
+            context.scene.frame_start = settings.frame_start
+            context.scene.frame_end = settings.frame_start + count - 1
         baking.select_only(context, result)
         progress.stage("build", 100)
         milliseconds = (time.perf_counter() - started) * 1000.0
         steiner = int(morph.stats.get("steiner_vertices", 0))
-        settings = getattr(context.scene, "stick_morph", None)
-        if settings is not None:
-            settings.last_result = result.name
-            settings.last_vertices = len(prepared.source_xy)
-            settings.last_steiner = steiner
-            settings.last_frames = count
-            settings.last_milliseconds = milliseconds
+        scene_settings = getattr(context.scene, "stick_morph", None)
+        if scene_settings is not None:
+            scene_settings.last_result = result.name
+            scene_settings.last_vertices = len(prepared.source_xy)
+            scene_settings.last_steiner = steiner
+            scene_settings.last_frames = count
+            scene_settings.last_milliseconds = milliseconds
         text = (f"Stick Morph: '{result.name}': {len(prepared.source_xy)} vertices, "
                 f"{steiner} Steiner vertices, {count} frames, {milliseconds:.0f} ms")
         self.report({"INFO"}, f"{text} ({progress.summary()})")

@@ -16,63 +16,75 @@ from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty, Po
 from . import common
 
 # The options copied from the preferences into an operator call (when the
-# caller did not set them) and into the scene settings (Load Defaults).
+# caller did not set them) and into the scene settings (Load Defaults): the
+# fields of common.BakeSettings but frame_start, which has no preference.
 OPTION_NAMES = ("frame_count", "steiner", "weights", "enclosure_sides", "plane", "easing",
                 "renderable", "tube_radius", "show_triangulation", "planarity_tolerance",
                 "set_frame_range")
 
+# The properties' defaults, defined once (common.BakeSettings).
+_DEFAULTS = common.BakeSettings()
+
+
+def bake_settings(data):
+    """The bake options of the operator (any holder of option_properties and
+    frame_start) as the one object core and baking take: read once per bake."""
+    return common.BakeSettings(frame_start=data.frame_start,
+                               **{name: getattr(data, name) for name in OPTION_NAMES})
+
 
 def option_properties():
     """Fresh property definitions for the bake options (a dict for __annotations__)."""
+    defaults = _DEFAULTS
     return {
         "frame_count": IntProperty(
             name="Frames", description="Number of frames of the morph, source and target included",
-            default=50, options=set(), min=2, max=common.MAX_ENGINE_FRAMES, soft_max=1000),
+            default=defaults.frame_count, options=set(), min=2, max=common.MAX_ENGINE_FRAMES, soft_max=1000),
         "steiner": EnumProperty(
             name="Steiner", description="How the compatible triangulation places Steiner vertices",
             items=(("improved", "Improved", "Fewest Steiner vertices (section 4.2 and further)"),
                    ("sg2001", "SG2001", "The reduced spiderweb of Surazhsky & Gotsman 2001"),
                    ("aronov", "Aronov", "The universal spiderweb of Aronov, Seidel & Souvaine")),
-            default="improved", options=set()),
+            default=defaults.steiner, options=set()),
         "weights": EnumProperty(
             name="Weights", description="Convex-combination weights of the Floater-Gotsman morph",
             items=(("mvc", "Mean Value", "Mean value coordinates"),
                    ("uniform", "Uniform", "Uniform (Tutte) weights"),
                    ("floater", "Floater", "Floater's shape-preserving weights")),
-            default="mvc", options=set()),
+            default=defaults.weights, options=set()),
         "enclosure_sides": IntProperty(
             name="Enclosure Sides", description="Sides of the regular polygon enclosing both figures",
-            default=6, options=set(), min=3, max=common.MAX_ENCLOSURE_SIDES, soft_max=64),
+            default=defaults.enclosure_sides, options=set(), min=3, max=common.MAX_ENCLOSURE_SIDES, soft_max=64),
         "plane": EnumProperty(
             name="Plane", description="The plane the figures are drawn in",
             items=(("AUTO", "Auto", "The best-fit plane of both meshes"),
                    ("XY", "XY", "The XY plane (seen from above)"),
                    ("XZ", "XZ", "The XZ plane (seen from the front)"),
                    ("YZ", "YZ", "The YZ plane (seen from the right)")),
-            default="AUTO", options=set()),
+            default=defaults.plane, options=set()),
         "easing": EnumProperty(
             name="Easing", description="Time remap of the morph",
             items=(("LINEAR", "Linear", "Constant speed"),
                    ("EASE_IN_OUT", "Ease In-Out", "Slow at the start and the end (smoothstep)")),
-            default="LINEAR", options=set()),
+            default=defaults.easing, options=set()),
         "renderable": BoolProperty(
             name="Renderable", description="Give the edges geometry (Geometry Nodes tubes) so that they render",
-            default=True, options=set()),
+            default=defaults.renderable, options=set()),
         "tube_radius": FloatProperty(
             name="Tube Radius", description="Tube radius as a fraction of the figures' size",
-            default=0.01, options=set(), min=1e-5, max=1.0, soft_max=0.1, precision=4),
+            default=defaults.tube_radius, options=set(), min=1e-5, max=1.0, soft_max=0.1, precision=4),
         "show_triangulation": BoolProperty(
             name="Show Triangulation",
             description="Add a wireframe helper object with the compatible triangulation "
                         "(source shape, with a Target shape key)",
-            default=False, options=set()),
+            default=defaults.show_triangulation, options=set()),
         "planarity_tolerance": FloatProperty(
             name="Planarity Tolerance",
             description="Largest allowed distance of a vertex from the plane, as a fraction of the figures' size",
-            default=common.DEFAULT_PLANARITY_TOLERANCE, options=set(), min=0.0, max=0.5, precision=6),
+            default=defaults.planarity_tolerance, options=set(), min=0.0, max=0.5, precision=6),
         "set_frame_range": BoolProperty(
             name="Set Frame Range", description="Set the scene's frame range to the morph's frames",
-            default=True, options=set()),
+            default=defaults.set_frame_range, options=set()),
     }
 
 
@@ -108,8 +120,8 @@ class StickMorphSceneSettings(bpy.types.PropertyGroup):
                                   description="Edge mesh the morph starts from (empty: the selected non-active mesh)"),
         "target": PointerProperty(name="Target", type=bpy.types.Object, poll=_is_mesh, options=set(),
                                   description="Edge mesh the morph ends at (empty: the active object)"),
-        "frame_start": IntProperty(name="Start", description="Frame showing the source", default=1,
-                                   options=set()),
+        "frame_start": IntProperty(name="Start", description="Frame showing the source",
+                                   default=_DEFAULTS.frame_start, options=set()),
         "last_result": StringProperty(name="Last Result", options=set()),
         "last_vertices": IntProperty(name="Vertices", options=set()),
         "last_steiner": IntProperty(name="Steiner Vertices", options=set()),

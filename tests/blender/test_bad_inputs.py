@@ -106,4 +106,4 @@ def test_core_refuses_counts_the_properties_clamp(addon, arguments, fragment):
     # call it directly; it refuses them before any engine work.
     core = addon.core
     with pytest.raises(core.StickMorphError, match=fragment):
-        core.compute_morph(None, **arguments)
+        core.compute_morph(None, core.BakeSettings(**arguments))
