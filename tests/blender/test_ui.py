@@ -1,5 +1,6 @@
 """The sidebar panel, its Advanced sub-panel, the settings' flags, the
-source/target preview, the result's name and the bake's stage report."""
+source/target preview, the result's name and the bake's stage report (the
+naming rule itself, core.result_name, is tested in tests/python/test_addon_core.py)."""
 
 import bpy
 import pytest
@@ -88,27 +89,6 @@ def test_preview_of_a_non_mesh(scene, addon):
     select(source, empty)
     ok, lines = ui.pair_preview(bpy.context, scene.stick_morph)
     assert not ok and "the target 'Empty' is a empty, not a mesh" in lines[0]
-
-
-@pytest.mark.parametrize("source, target, expected", [
-    ("monkey_to_player_source", "monkey_to_player_target", "monkey_to_player_morph"),
-    ("Cube.001", "Cube.002", "Cube_morph"),
-    ("source_arm", "target_arm", "arm_morph"),
-    ("walk_start_pose", "walk_end_pose", "walk_pose_morph"),
-    ("Fig", "Fig_2", "Fig_morph"),
-    ("Source", "Target", "Source_to_Target"),
-    ("S", "U", "S_to_U"),
-    ("1_a", "1_b", "1_a_to_1_b"),  # one shared digit says nothing
-    ("a" * 50, "b" * 50, "a" * 18 + "_to_" + "b" * 18),
-    ("\u00e9" * 30, "x", "\u00e9" * 17 + "_to_x"),  # cut by UTF-8 bytes, never inside a character
-])
-def test_result_name(addon, source, target, expected):
-    core = addon.core
-    name = core.result_name(source, target)
-    assert name == expected
-    assert len(name.encode("utf-8")) <= core.MAX_RESULT_NAME_BYTES
-    # With the helper's suffix it still fits Blender's 63-byte names.
-    assert len((name + "_triangulation").encode("utf-8")) <= 63
 
 
 def test_sample_pair_gets_the_short_name(scene, addon):

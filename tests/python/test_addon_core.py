@@ -1,0 +1,304 @@
+"""The add-on's bpy-free modules (addon/stick_morph/core.py, common.py) outside
+Blender, in Debian's /usr/bin/python3 with the module built in
+$STICKMORPH_BUILD_DIR/python (conftest.py puts it on sys.path).
+
+core.py and common.py are loaded from the repository by path, as submodules of
+a package object made here: the add-on's __init__.py is not run, so these
+tests see only what core imports itself. That __init__.py imports no bpy at
+import time is checked separately, in a child Python without bpy.
+
+Blender-side behaviour (reading meshes, baking, the operator, the panel) is
+tested in tests/blender, inside Blender.
+"""
+import dataclasses
+import importlib
+import importlib.machinery
+import pathlib
+import subprocess
+import sys
+import types
+
+import numpy as np
+import pytest
+
+REPO = pathlib.Path(__file__).resolve().parents[2]
+ADDON = REPO / "addon" / "stick_morph"
+# Not "stick_morph": an add-on of that name installed in this Python is not
+# the one under test.
+PACKAGE = "stick_morph_under_test"
+
+
+def load_addon_module(name):
+    """addon/stick_morph/<name>.py as PACKAGE.<name>, without running __init__.py."""
+    if PACKAGE not in sys.modules:
+        package = types.ModuleType(PACKAGE)
+        package.__path__ = [str(ADDON)]
+        package.__spec__ = importlib.machinery.ModuleSpec(PACKAGE, None, is_package=True)
+        package.__spec__.submodule_search_locations = package.__path__
+        sys.modules[PACKAGE] = package
+    return importlib.import_module(f"{PACKAGE}.{name}")
+
+
+core = load_addon_module("core")
+common = load_addon_module("common")
+
+
+def test_the_package_imports_without_bpy():
+    # The real package this time, __init__.py included, in a Python whose
+    # sys.modules holds no bpy (there is none outside Blender: an `import bpy`
+    # at import time fails the child).
+    code = ("import sys; sys.path.insert(0, sys.argv[1]); import stick_morph; import stick_morph.core as c; "
+            "assert 'bpy' not in sys.modules, 'bpy imported'; "
+            "print(stick_morph.bl_info['name'], c.ease(0.5, 'EASE_IN_OUT'))")
+    out = subprocess.run([sys.executable, "-c", code, str(ADDON.parent)], capture_output=True, text=True,
+                         timeout=60)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip() == "Stick Morph 0.5"
+    # And the loader above did not run __init__.py.
+    assert not hasattr(sys.modules[PACKAGE], "bl_info")
+    assert "bpy" not in sys.modules
+
+
+def test_core_finds_the_built_engine():
+    engine = core.load_engine()
+    assert pathlib.Path(engine.__file__).parent.name == "python"
+    assert hasattr(engine, "morph") and hasattr(engine, "check_compatibility")
+
+
+# ------------------------------------------------------------- settings ----
+
+def test_bake_settings_defaults_and_frozen():
+    settings = core.BakeSettings()
+    assert core.BakeSettings is common.BakeSettings
+    assert (settings.frame_count, settings.frame_start, settings.easing, settings.plane) == (50, 1, "LINEAR", "AUTO")
+    assert settings.planarity_tolerance == 1e-4
+    # One bake's options cannot change under it.
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        settings.frame_count = 3
+    assert dataclasses.replace(settings, frame_count=3).frame_count == 3
+
+
+@pytest.mark.parametrize("changes, fragment", [
+    ({"frame_count": 1}, "between 2 and 100000, got 1"),
+    ({"frame_count": 100001}, "between 2 and 100000, got 100001"),
+    ({"frame_count": 5, "enclosure_sides": 2}, "3 to 1000 sides, got 2"),
+    ({"frame_count": 5, "enclosure_sides": 1001}, "3 to 1000 sides, got 1001"),
+    ({"easing": "BOUNCE"}, "unknown easing 'BOUNCE'"),
+])
+def test_compute_morph_refuses_settings_out_of_range(changes, fragment):
+    # Blender clamps the operator's frame_count and enclosure_sides to their
+    # hard limits, so out-of-range values reach core only from scripts that
+    # call it directly; it refuses them before any engine work (no pair).
+    with pytest.raises(core.StickMorphError, match=fragment):
+        core.compute_morph(None, core.BakeSettings(**changes))
+
+
+# ----------------------------------------------------------------- plane ----
+
+def test_fit_plane_auto_tilted_and_parallel():
+    rng = np.random.default_rng(1)
+    normal = np.array([0.3, -0.4, 0.866])
+    normal /= np.linalg.norm(normal)
+    u = np.cross(normal, [1.0, 0.0, 0.0])
+    u /= np.linalg.norm(u)
+    v = np.cross(normal, u)
+    a = rng.normal(size=(6, 2)) @ np.array([u, v])
+    b = rng.normal(size=(6, 2)) @ np.array([u, v]) + 5 * normal + [1, 2, 3]  # a parallel plane far off
+    plane = core.fit_plane(a, b, "AUTO")
+    assert abs(plane.normal @ normal) == pytest.approx(1.0, abs=1e-12)
+    assert plane.normal @ normal > 0  # the side of the nearest axis plane (XY: +Z)
+    x_in_plane = np.array([1.0, 0, 0]) - plane.normal[0] * plane.normal  # X projected into the plane
+    assert np.allclose(np.cross(plane.u, x_in_plane), 0, atol=1e-12) and plane.u[0] > 0
+    xy, h = core.project(a, plane)
+    assert np.allclose(core.unproject(xy, h, plane), a, atol=1e-12)
+    _, hb = core.project(b, plane)
+    assert core.planarity_deviation(hb)[0] < 1e-12
+
+
+def test_fit_plane_collinear_and_axis():
+    line = np.array([[0, 0, 0], [1, 1, 0], [2, 2, 0.0]])
+    plane = core.fit_plane(line, line + [0, 0, 0], "AUTO")
+    assert abs(plane.normal @ plane.u) < 1e-12 and np.linalg.norm(plane.normal) == pytest.approx(1)
+    assert abs(plane.normal[2]) == pytest.approx(1.0)
+    # A figure in an axis plane gets exactly that plane's axes.
+    square = np.array([[0, 5, 0], [1, 5, 0], [1, 5, 1], [0, 5, 1.0]])
+    auto = core.fit_plane(square, square + [3, 0, 0], "AUTO")
+    assert np.allclose(auto.u, [1, 0, 0], atol=1e-12) and np.allclose(auto.v, [0, 0, 1], atol=1e-12)
+    assert np.allclose(auto.normal, [0, -1, 0], atol=1e-12)
+    xz = core.fit_plane(line, line, "XZ")
+    assert np.allclose(xz.normal, [0, -1, 0])
+    with pytest.raises(core.StickMorphError):
+        core.fit_plane(line, line, "UV")
+
+
+@pytest.mark.parametrize("normal", [[0, 0, 1], [1, 0, 0], [0, 1, 0], [1, 1, 1], [1, -1, 0.01], [0.577, 0.577, -0.578]])
+def test_fit_plane_gives_an_orthonormal_right_handed_frame(normal):
+    # The nearest axis plane's u, projected into the plane, is never too
+    # short to normalise, whatever the normal (fit_plane relies on it).
+    normal = np.array(normal, dtype=np.float64) / np.linalg.norm(normal)
+    helper = np.array([1.0, 0, 0]) if abs(normal[0]) < 0.9 else np.array([0, 1.0, 0])
+    u = np.cross(normal, helper)
+    u /= np.linalg.norm(u)
+    v = np.cross(normal, u)
+    points = np.array([[0, 0], [1, 0.2], [0.3, 1.5], [-1, 0.7]]) @ np.array([u, v])
+    plane = core.fit_plane(points, points + 2 * u, "AUTO")
+    frame = np.array([plane.u, plane.v, plane.normal])
+    assert np.allclose(frame @ frame.T, np.eye(3), atol=1e-12)
+    assert np.allclose(np.cross(plane.u, plane.v), plane.normal, atol=1e-12)
+    assert abs(plane.normal @ normal) == pytest.approx(1.0, abs=1e-9)
+
+
+# ---------------------------------------------------------- edges, easing ----
+
+def test_edge_sets_and_easing():
+    assert core.compare_edge_sets([[0, 1], [1, 2]], [[2, 1], [1, 0]]) is None
+    message = core.compare_edge_sets([[0, 1], [1, 2]], [[0, 1], [0, 2]], "A", "B")
+    assert "only in 'A': 1-2" in message and "only in 'B': 0-2" in message
+    t = np.linspace(0, 1, 11)
+    assert np.array_equal(core.ease(t, "LINEAR"), t)
+    eased = core.ease(t, "EASE_IN_OUT")
+    assert eased[0] == 0 and eased[-1] == 1 and np.all(np.diff(eased) > 0)
+    index = core.ease_sample_indices(11, "EASE_IN_OUT")
+    assert index[0] == 0 and index[-1] == core.engine_frame_count(11, "EASE_IN_OUT") - 1
+    assert np.array_equal(core.ease_sample_indices(7, "LINEAR"), np.arange(7))
+
+
+# ------------------------------------------------------------ the morph ----
+
+# A tree (a junction at 0 with three arms) and its target pose, in 2D.
+TREE_SOURCE = np.array([[0, 0], [1, 0], [2, 0.2], [-0.5, 0.9], [-1.0, 1.8], [-0.5, -0.9], [-0.8, -1.9]])
+TREE_TARGET = np.array([[0, 0], [0.9, 0.5], [1.5, 1.3], [-0.9, 0.4], [-1.9, 0.2], [0.1, -1.0], [0.9, -1.6]])
+TREE_EDGES = np.array([[0, 1], [1, 2], [0, 3], [3, 4], [0, 5], [5, 6]])
+
+# A tilted plane; the target lies in a parallel plane 0.7 above the source's.
+_N = np.array([0.2, -0.5, 0.84]) / np.linalg.norm([0.2, -0.5, 0.84])
+_U = np.cross(_N, [1.0, 0, 0]) / np.linalg.norm(np.cross(_N, [1.0, 0, 0]))
+_V = np.cross(_N, _U)
+
+
+def in_space(xy, offset):
+    return np.asarray(xy, dtype=np.float64) @ np.array([_U, _V]) + offset
+
+
+SOURCE_WORLD = in_space(TREE_SOURCE, [1.0, -2.0, 0.5])
+TARGET_WORLD = in_space(TREE_TARGET * 0.8, [4.0, 1.0, -0.5] + 0.7 * _N)
+
+
+def prepare(source=SOURCE_WORLD, target=TARGET_WORLD, settings=core.BakeSettings(), source_faces=0,
+            target_edges=TREE_EDGES):
+    return core.prepare_pair(source, TREE_EDGES, source_faces, "Arm", target, target_edges, 0, "Arm pose",
+                             settings)
+
+
+def test_morph_starts_at_the_source_and_ends_at_the_target_in_world_space():
+    prepared = prepare()
+    assert (prepared.source_name, prepared.target_name) == ("Arm", "Arm pose")
+    core.check_pair(prepared)
+    settings = core.BakeSettings(frame_count=7)
+    morph = core.compute_morph(prepared, settings)
+    assert morph.frames_world.shape == (7, len(TREE_SOURCE), 3)
+    size = prepared.size
+    assert np.abs(morph.frames_world[0] - SOURCE_WORLD).max() <= 1e-9 * size
+    assert np.abs(morph.frames_world[-1] - TARGET_WORLD).max() <= 1e-9 * size
+    # Every frame lies in a plane parallel to the figures' planes, moving from
+    # the source's to the target's in equal steps (uniform times, linear easing).
+    heights = (morph.frames_world - prepared.plane.origin) @ prepared.plane.normal
+    assert np.ptp(heights, axis=1).max() <= 1e-9 * size
+    assert abs(heights[-1, 0] - heights[0, 0]) > 0.1
+    assert np.allclose(np.diff(heights[:, 0]), (heights[-1, 0] - heights[0, 0]) / 6, atol=1e-9 * size)
+    assert morph.stats["steiner_vertices"] >= 0 and morph.triangulation is not None
+    # Easing picks frames of a finer uniform morph: the first step is shorter.
+    eased = core.compute_morph(prepared, dataclasses.replace(settings, easing="EASE_IN_OUT"))
+    assert np.abs(eased.frames_world[[0, -1]] - morph.frames_world[[0, -1]]).max() <= 1e-9 * size
+    step = np.linalg.norm(np.diff(eased.frames_world, axis=0), axis=2).max(axis=1)
+    linear_step = np.linalg.norm(np.diff(morph.frames_world, axis=0), axis=2).max(axis=1)
+    assert step[0] < 0.7 * linear_step[0] and step[3] > 1.2 * linear_step[3]
+
+
+def test_the_settings_reach_the_engine():
+    prepared = prepare()
+    base = core.compute_morph(prepared, core.BakeSettings(frame_count=5))
+    for changes in ({"weights": "uniform"}, {"enclosure_sides": 9}, {"steiner": "aronov"}):
+        other = core.compute_morph(prepared, core.BakeSettings(frame_count=5, **changes))
+        assert np.abs(other.frames_world[[0, -1]] - base.frames_world[[0, -1]]).max() <= 1e-9 * prepared.size
+        assert np.abs(other.frames_world[2] - base.frames_world[2]).max() > 1e-6 * prepared.size, changes
+    with pytest.raises(core.StickMorphError, match="stickmorph"):
+        core.compute_morph(prepared, core.BakeSettings(frame_count=5, weights="nonsense"))
+
+
+def test_triangulation_world_keeps_the_figure_vertices():
+    prepared = prepare()
+    morph = core.compute_morph(prepared, core.BakeSettings(frame_count=3))
+    source_nodes, target_nodes, triangles = core.triangulation_world(morph.triangulation, prepared)
+    n = len(TREE_SOURCE)
+    assert np.abs(source_nodes[:n] - SOURCE_WORLD).max() <= 1e-9 * prepared.size
+    assert np.abs(target_nodes[:n] - TARGET_WORLD).max() <= 1e-9 * prepared.size
+    assert triangles.shape[1] == 3 and triangles.max() < len(source_nodes) == len(target_nodes)
+
+
+def test_plane_and_tolerance_come_from_the_settings():
+    bent = SOURCE_WORLD.copy()
+    bent[4] += 0.01 * _N
+    size = prepare(bent, settings=core.BakeSettings(planarity_tolerance=0.5)).size
+    with pytest.raises(core.StickMorphError, match="not planar: vertex 4 of 'Arm'"):
+        prepare(bent, settings=core.BakeSettings(planarity_tolerance=0.001 / size))
+    assert prepare(bent, settings=core.BakeSettings(planarity_tolerance=0.02 / size)).size == size
+    # An axis plane the tilted figures do not lie in.
+    with pytest.raises(core.StickMorphError, match="the XY plane.*try plane AUTO"):
+        prepare(settings=core.BakeSettings(plane="XY"))
+    with pytest.raises(core.StickMorphError, match="unknown plane 'UV'"):
+        prepare(settings=core.BakeSettings(plane="UV"))
+
+
+def test_prepare_pair_names_the_object_at_fault():
+    with pytest.raises(core.StickMorphError, match="'Arm' has 2 faces"):
+        prepare(source_faces=2)
+    with pytest.raises(core.StickMorphError, match="'Arm' has 7 vertices, 'Arm pose' has 6"):
+        prepare(target=TARGET_WORLD[:6])
+    with pytest.raises(core.StickMorphError, match="edges only in 'Arm pose': 1-3"):
+        prepare(target_edges=np.array([[0, 1], [1, 3], [0, 3], [3, 4], [0, 5], [5, 6]]))
+    broken = TARGET_WORLD.copy()
+    broken[2, 1] = np.nan
+    with pytest.raises(core.StickMorphError, match="'Arm pose': vertex 2 has a non-finite coordinate"):
+        prepare(target=broken)
+
+
+def test_check_pair_names_the_objects():
+    crossing = TREE_SOURCE.copy()
+    crossing[2] = [-1.0, -1.0]
+    crossing[6] = [1.0, 1.0]
+    with pytest.raises(core.StickMorphError) as error:
+        core.check_pair(prepare(source=in_space(crossing, [1.0, -2.0, 0.5])))
+    assert str(error.value).startswith("crossing edges: 'Arm': ")
+    mirrored = TREE_TARGET * [-1.0, 1.0]
+    with pytest.raises(core.StickMorphError, match="'Arm pose' is a mirror image of 'Arm'"):
+        core.check_pair(prepare(target=in_space(mirrored, [4.0, 1.0, -0.5])))
+
+
+def test_tube_radius():
+    assert core.tube_radius(10.0, 0.01) == pytest.approx(0.1)
+    assert core.tube_radius(0.0, 0.01) == 0.01  # a figure of no size: the factor itself
+    assert core.tube_radius(1e-9, 0.01) == 1e-6  # never thinner than 1e-6
+    assert core.tube_radius(float("nan"), 0.02) == 0.02
+
+
+# ---------------------------------------------------------- result name ----
+
+@pytest.mark.parametrize("source, target, expected", [
+    ("monkey_to_player_source", "monkey_to_player_target", "monkey_to_player_morph"),
+    ("Cube.001", "Cube.002", "Cube_morph"),
+    ("source_arm", "target_arm", "arm_morph"),
+    ("walk_start_pose", "walk_end_pose", "walk_pose_morph"),
+    ("Fig", "Fig_2", "Fig_morph"),
+    ("Source", "Target", "Source_to_Target"),
+    ("S", "U", "S_to_U"),
+    ("1_a", "1_b", "1_a_to_1_b"),  # one shared digit says nothing
+    ("a" * 50, "b" * 50, "a" * 18 + "_to_" + "b" * 18),
+    ("\u00e9" * 30, "x", "\u00e9" * 17 + "_to_x"),  # cut by UTF-8 bytes, never inside a character
+])
+def test_result_name(source, target, expected):
+    name = core.result_name(source, target)
+    assert name == expected
+    assert len(name.encode("utf-8")) <= core.MAX_RESULT_NAME_BYTES
+    # With the helper's suffix it still fits Blender's 63-byte names.
+    assert len((name + "_triangulation").encode("utf-8")) <= 63
