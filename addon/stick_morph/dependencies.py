@@ -11,7 +11,7 @@ into the package by build_addon.py), which Python this Blender has, and how
 to rebuild. The panel shows it and the bake operator reports it as an ERROR.
 
 Free of bpy and numpy, so that it imports in any Python and is unit-tested
-outside Blender (tests/blender/test_dependencies.py).
+outside Blender (tests/python/test_addon_dependencies.py).
 """
 
 from __future__ import annotations
