@@ -22,8 +22,7 @@ import bpy
 from bpy.props import IntProperty, StringProperty
 
 from . import dependencies
-from .common import StickMorphError
-from .common import BakeSettings
+from .common import BakeSettings, StickMorphError
 from .preferences import OPTION_NAMES, addon_preferences, bake_settings, option_properties
 
 PACKAGE_DIR = os.path.dirname(os.path.abspath(__file__))
