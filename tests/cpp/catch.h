@@ -23,7 +23,7 @@ using Catch::Matchers::StartsWith;
 }  // namespace stickmorph_test
 
 #else
-#include "catch.h"
+#include <catch2/catch.hpp>
 
 namespace stickmorph_test {
 using Catch::Matchers::Contains;
