@@ -28,6 +28,7 @@ MIRROR=${STICKMORPH_DEBIAN_MIRROR:-http://deb.debian.org/debian}
 PACKAGES=(
   blender python3-numpy
   cmake make g++ pybind11-dev libeigen3-dev libcgal-dev libgmp-dev python3-dev
+  nlohmann-json3-dev libcli11-dev
   python3-pytest
   libegl1 libegl-mesa0
   xvfb xauth

@@ -18,7 +18,7 @@ packages=(
   libeigen3-dev
   libcgal-dev
   libcli11-dev        # command-line parsing of the CLI, the benchmarks and the random-pair harness
-  libjsoncpp-dev      # the figure and result files (native/io)
+  nlohmann-json3-dev  # the JSON reader of the figure and result files (native/io)
   catch2
   python3-dev
   python3-numpy
