@@ -1,4 +1,4 @@
-#include "stickmorph/json.h"
+#include "stickmorph/io/json.h"
 
 #include <charconv>
 #include <cmath>
