@@ -6,6 +6,8 @@
 #include <system_error>
 #include <unordered_map>
 
+#include <nlohmann/json.hpp>
+
 namespace stickmorph {
 
 std::string describe_location(const JsonLocation& location) {
@@ -33,31 +35,7 @@ std::string excerpt(std::string_view text) {
 bool is_digit(unsigned char c) { return c >= '0' && c <= '9'; }
 bool is_letter(unsigned char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
 bool is_word_char(unsigned char c) { return is_letter(c) || is_digit(c) || c == '_'; }
-
-int hex_value(unsigned char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  return -1;
-}
-
-void append_utf8(std::string& out, std::uint32_t code_point) {
-  if (code_point < 0x80) {
-    out += static_cast<char>(code_point);
-  } else if (code_point < 0x800) {
-    out += static_cast<char>(0xC0 | (code_point >> 6));
-    out += static_cast<char>(0x80 | (code_point & 0x3F));
-  } else if (code_point < 0x10000) {
-    out += static_cast<char>(0xE0 | (code_point >> 12));
-    out += static_cast<char>(0x80 | ((code_point >> 6) & 0x3F));
-    out += static_cast<char>(0x80 | (code_point & 0x3F));
-  } else {
-    out += static_cast<char>(0xF0 | (code_point >> 18));
-    out += static_cast<char>(0x80 | ((code_point >> 12) & 0x3F));
-    out += static_cast<char>(0x80 | ((code_point >> 6) & 0x3F));
-    out += static_cast<char>(0x80 | (code_point & 0x3F));
-  }
-}
+bool is_space(unsigned char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 
 std::string hex_byte(unsigned char c) {
   char text[5];
@@ -65,48 +43,10 @@ std::string hex_byte(unsigned char c) {
   return text;
 }
 
-// True when a number whose conversion was out of range is too large (rather
-// than too small) for a double. `text` matches the JSON number grammar.
-// from_chars reports both overflow and underflow as out of range, and only
-// the extreme ends of the range fail (decimal exponents above 308 or below
-// -323), so the sign of the decimal exponent of the leading significant
-// digit tells the two apart.
-bool is_overflow(std::string_view text) {
-  std::size_t i = 0;
-  if (text[i] == '-') ++i;
-  long long leading_exponent = 0;  // decimal exponent of the first nonzero digit
-  bool found = false;
-  long long integer_digits = 0;
-  for (; i < text.size() && is_digit(text[i]); ++i) {
-    if (!found && text[i] != '0') found = true;
-    if (found) ++integer_digits;
-  }
-  if (found) leading_exponent = integer_digits - 1;
-  if (i < text.size() && text[i] == '.') {
-    ++i;
-    for (long long position = 1; i < text.size() && is_digit(text[i]); ++i, ++position) {
-      if (!found && text[i] != '0') {
-        found = true;
-        leading_exponent = -position;
-      }
-    }
-  }
-  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
-    ++i;
-    bool negative = false;
-    if (text[i] == '+' || text[i] == '-') negative = text[i++] == '-';
-    long long exponent = 0;
-    // Saturate: an exponent with a thousand digits is still just "huge".
-    for (; i < text.size(); ++i) {
-      if (exponent < 1000000000) exponent = exponent * 10 + (text[i] - '0');
-    }
-    leading_exponent += negative ? -exponent : exponent;
-  }
-  return found && leading_exponent > 0;
-}
-
-// Offset of the first byte that breaks strict UTF-8 (no overlong forms, no
-// surrogates, nothing above U+10FFFF), or npos.
+// Offset of the first byte that starts an invalid UTF-8 sequence (overlong
+// forms, surrogates, code points above U+10FFFF, truncated sequences), or
+// npos. The library reports the byte at which it noticed the problem, which
+// for a truncated sequence is the byte after it; messages name the sequence.
 std::size_t invalid_utf8_offset(std::string_view bytes) {
   std::size_t i = 0;
   while (i < bytes.size()) {
@@ -132,342 +72,439 @@ std::size_t invalid_utf8_offset(std::string_view bytes) {
   return std::string_view::npos;
 }
 
-class Parser {
+// Turns byte offsets into lines and columns as FORMAT.md's messages count
+// them: lines end at '\n' only ("\r\n" is '\r' then a line end), columns
+// count bytes from 1, and a skipped byte order mark takes no column.
+// Offsets asked for mostly grow, so it scans forward from the last one.
+class Locator {
  public:
-  explicit Parser(std::string_view text) : text_(text) {}
+  Locator(std::string_view text, std::size_t first) : text_(text), first_(first), line_start_(first), scanned_(first) {}
 
-  JsonValue parse_document() {
-    // RFC 8259 section 8.1: a parser may ignore a leading byte order mark.
-    // Editors on some systems write one.
-    if (text_.substr(0, 3) == "\xEF\xBB\xBF") {
-      pos_ = 3;
-      line_start_ = 3;
+  JsonLocation at(std::size_t offset) {
+    if (offset < scanned_) {  // a message about an earlier byte: count again
+      line_ = 1;
+      line_start_ = scanned_ = first_;
     }
-    skip_whitespace();
-    if (at_end()) {
-      fail(here(), text_.empty() ? "empty input, expected a JSON value"
-                                 : "no JSON value, only whitespace");
+    for (; scanned_ < offset && scanned_ < text_.size(); ++scanned_) {
+      if (text_[scanned_] == '\n') {
+        ++line_;
+        line_start_ = scanned_ + 1;
+      }
     }
-    JsonValue value = parse_value(0);
-    skip_whitespace();
-    if (!at_end()) fail_unexpected(" after the JSON value");
-    return value;
+    return {line_, offset - line_start_ + 1};
   }
 
  private:
-  JsonLocation here() const { return {line_, pos_ - line_start_ + 1}; }
-  bool at_end() const { return pos_ >= text_.size(); }
-  unsigned char peek() const { return static_cast<unsigned char>(text_[pos_]); }
-  unsigned char peek_at(std::size_t offset) const {
-    return pos_ + offset < text_.size() ? static_cast<unsigned char>(text_[pos_ + offset]) : 0;
+  std::string_view text_;
+  std::size_t first_;
+  std::size_t line_ = 1;
+  std::size_t line_start_;
+  std::size_t scanned_;
+};
+
+using Library = nlohmann::json;
+
+// Builds the document model from nlohmann-json's SAX events.
+//
+// The library does the parsing and the RFC 8259 checks: grammar, numbers
+// (including overflow: out_of_range.406), strings (escapes, surrogate
+// pairs, control characters, UTF-8), comments and trailing data. It gives
+// no positions for values, and its messages name the byte where it noticed
+// a problem rather than the value at fault. So this builder follows the
+// text alongside the events: every event is for the next token after
+// `cursor_` (skipping whitespace and the one ',' or ':' the library has
+// already checked), which gives each value its line and column. On an
+// error it looks at the bytes after the last good token, knowing what the
+// grammar expects there, and says what is wrong as FORMAT.md's messages
+// do ("trailing comma before ']'", "the array opened at ... is not
+// closed").
+//
+// Checks the library does not make, or makes differently, are made here:
+// repeated object keys (RFC 8259 leaves them undefined and readers disagree
+// on which one wins), the nesting limit, a leading zero ("01": the library
+// reads the numbers 0 and 1), words that merely start with a literal
+// ("truex": the library reads true, then fails at x), and a NUL byte after
+// the value, which the library takes for the end of the input. Numbers are
+// converted from their text with std::from_chars, which unlike the
+// library's strtod keeps the sign of -0 (the library reads "-0" as the
+// integer 0) and does not depend on the C locale (Blender sets one).
+class DocumentBuilder final : public nlohmann::json_sax<Library> {
+ public:
+  DocumentBuilder(std::string_view text, std::size_t first) : text_(text), cursor_(first), where_(text, first) {}
+
+  bool null() override { return literal("null", JsonValue(nullptr)); }
+  bool boolean(bool flag) override { return literal(flag ? "true" : "false", JsonValue(flag)); }
+  bool number_integer(number_integer_t) override { return number(); }
+  bool number_unsigned(number_unsigned_t) override { return number(); }
+  bool number_float(number_float_t, const string_t&) override { return number(); }
+
+  bool string(string_t& text) override {
+    const std::size_t start = token_start();
+    cursor_ = string_end(start);
+    return add(JsonValue(std::move(text)), start);
   }
 
-  [[noreturn]] void fail(const JsonLocation& location, const std::string& what) const {
-    throw JsonError(describe_location(location) + ": " + what);
+  bool binary(binary_t&) override {
+    throw InternalError("nlohmann-json reported binary data while parsing JSON text");
   }
 
-  // Reports the byte at the current position (or the end of input) as out
-  // of place. `context` follows "unexpected <byte>" and says where the byte
-  // is or what was expected instead (", expected ':'").
-  [[noreturn]] void fail_unexpected(const std::string& context) const {
-    if (at_end()) fail(here(), "unexpected end of input" + context);
-    const unsigned char c = peek();
-    if (c == '/' && (peek_at(1) == '/' || peek_at(1) == '*')) {
-      fail(here(), "comments are not allowed in JSON");
+  bool start_object(std::size_t) override { return open(true); }
+  bool start_array(std::size_t) override { return open(false); }
+  bool end_object() override { return close(); }
+  bool end_array() override { return close(); }
+
+  bool key(string_t& name) override {
+    const std::size_t start = token_start();
+    cursor_ = string_end(start);
+    Open& object = stack_.back();
+    const JsonLocation location = where_.at(start);
+    const auto [previous, inserted] = object.first_location_of_key.emplace(name, location);
+    if (!inserted) {
+      fail(start, "duplicate key " + quote_json_string(excerpt(name)) + " (first at " +
+                      describe_location(previous->second) + ")");
     }
-    if (c == '\'') fail(here(), "unexpected character '\\'', JSON strings use double quotes");
-    const bool printable = c >= 0x21 && c <= 0x7E;
-    const std::string what = printable ? std::string("character '") + static_cast<char>(c) + "'"
-                                       : "byte " + hex_byte(c);
-    fail(here(), "unexpected " + what + context);
+    object.pending_key = std::move(name);
+    object.pending_key_location = location;
+    expect_ = Expect::Colon;
+    return true;
   }
 
-  [[noreturn]] void fail_unclosed(const char* container, const JsonLocation& opened) const {
-    fail(here(), std::string("unexpected end of input, the ") + container + " opened at " +
-                     describe_location(opened) + " is not closed");
+  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& error) override {
+    diagnose(position, error);
   }
 
-  void skip_whitespace() {
-    while (!at_end()) {
-      const unsigned char c = peek();
-      if (c == '\n') {
-        ++line_;
-        line_start_ = pos_ + 1;
-      } else if (c != ' ' && c != '\t' && c != '\r') {
-        return;
-      }
-      ++pos_;
-    }
+  // After the library accepted the text: anything but whitespace after the
+  // value is an error. The library stops at a NUL byte as if the input
+  // ended there, so "[1]\0x" gets here.
+  JsonValue finish() {
+    const std::size_t after = skip_space(cursor_);
+    if (after < text_.size()) fail_unexpected(after, " after the JSON value");
+    return std::move(root_);
   }
 
-  // Parses the value starting at the current position (whitespace already
-  // skipped). `depth` counts the arrays and objects enclosing it.
-  JsonValue parse_value(std::size_t depth) {
-    if (at_end()) fail(here(), "unexpected end of input, expected a JSON value");
-    const JsonLocation location = here();
-    const unsigned char c = peek();
-    JsonValue value;
-    if (c == '{') {
-      value = parse_object(depth);
-    } else if (c == '[') {
-      value = parse_array(depth);
-    } else if (c == '"') {
-      value = parse_string();
-    } else if (c == '-' || is_digit(c)) {
-      value = parse_number();
-    } else if (is_letter(c)) {
-      value = parse_word();
-    } else {
-      fail_unexpected(", expected a JSON value");
-    }
-    value.set_location(location);
-    return value;
-  }
+ private:
+  // What the grammar allows after the last event.
+  enum class Expect {
+    Value,       // the document's value
+    FirstValue,  // after '[': a value or ']'
+    FirstKey,    // after '{': a key or '}'
+    Colon,       // after a key
+    CommaOrEnd,  // after a value inside an array or object
+    End,         // after the document's value
+  };
 
-  void enter_container(std::size_t depth, const JsonLocation& location) const {
-    if (depth + 1 > kMaxJsonDepth) {
-      fail(location, "arrays and objects nest deeper than " + std::to_string(kMaxJsonDepth) +
-                         " levels");
-    }
-  }
-
-  JsonValue parse_array(std::size_t depth) {
-    const JsonLocation opened = here();
-    enter_container(depth, opened);
-    ++pos_;  // '['
-    JsonValue::Array elements;
-    skip_whitespace();
-    if (!at_end() && peek() == ']') {
-      ++pos_;
-      return JsonValue(std::move(elements));
-    }
-    while (true) {
-      if (at_end()) fail_unclosed("array", opened);
-      elements.push_back(parse_value(depth + 1));
-      skip_whitespace();
-      if (at_end()) fail_unclosed("array", opened);
-      if (peek() == ']') {
-        ++pos_;
-        return JsonValue(std::move(elements));
-      }
-      if (peek() != ',') fail_unexpected(" in an array, expected ',' or ']'");
-      const JsonLocation comma = here();
-      ++pos_;
-      skip_whitespace();
-      if (!at_end() && peek() == ']') fail(comma, "trailing comma before ']'");
-    }
-  }
-
-  JsonValue parse_object(std::size_t depth) {
-    const JsonLocation opened = here();
-    enter_container(depth, opened);
-    ++pos_;  // '{'
-    JsonValue::Object members;
-    // RFC 8259 leaves repeated keys undefined; readers disagree on which one
-    // wins, so a repeated key is an error rather than a silent choice.
+  struct Open {
+    JsonValue value;  // an empty array or object, filled as events come
+    std::string pending_key;
+    JsonLocation pending_key_location;
     std::unordered_map<std::string, JsonLocation> first_location_of_key;
-    skip_whitespace();
-    if (!at_end() && peek() == '}') {
-      ++pos_;
-      return JsonValue(std::move(members));
-    }
-    while (true) {
-      if (at_end()) fail_unclosed("object", opened);
-      if (peek() != '"') fail_unexpected(" in an object, expected a string key");
-      const JsonLocation key_location = here();
-      std::string key = parse_string();
-      const auto [previous, inserted] = first_location_of_key.emplace(key, key_location);
-      if (!inserted) {
-        fail(key_location, "duplicate key " + quote_json_string(excerpt(key)) + " (first at " +
-                               describe_location(previous->second) + ")");
-      }
-      skip_whitespace();
-      if (at_end()) fail_unclosed("object", opened);
-      if (peek() != ':') fail_unexpected(" after an object key, expected ':'");
-      ++pos_;
-      skip_whitespace();
-      if (at_end()) fail_unclosed("object", opened);
-      JsonValue value = parse_value(depth + 1);
-      members.push_back(JsonMember{std::move(key), key_location, std::move(value)});
-      skip_whitespace();
-      if (at_end()) fail_unclosed("object", opened);
-      if (peek() == '}') {
-        ++pos_;
-        return JsonValue(std::move(members));
-      }
-      if (peek() != ',') fail_unexpected(" in an object, expected ',' or '}'");
-      const JsonLocation comma = here();
-      ++pos_;
-      skip_whitespace();
-      if (!at_end() && peek() == '}') fail(comma, "trailing comma before '}'");
-    }
+  };
+
+  [[noreturn]] void fail(std::size_t offset, const std::string& what) {
+    throw JsonError(describe_location(where_.at(offset)) + ": " + what);
   }
 
-  // Reads four hex digits after "\u" at the current position.
-  std::uint32_t parse_hex4(const JsonLocation& escape) {
-    std::uint32_t code_unit = 0;
-    for (int k = 0; k < 4; ++k) {
-      const int digit = at_end() ? -1 : hex_value(peek());
-      if (digit < 0) fail(escape, "\\u in a string must be followed by 4 hex digits");
-      code_unit = code_unit * 16 + static_cast<std::uint32_t>(digit);
-      ++pos_;
-    }
-    return code_unit;
+  std::size_t skip_space(std::size_t offset) const {
+    while (offset < text_.size() && is_space(static_cast<unsigned char>(text_[offset]))) ++offset;
+    return offset;
   }
 
-  std::string parse_string() {
-    const JsonLocation opened = here();
-    ++pos_;  // '"'
-    std::string out;
-    while (true) {
-      // Copy the run of ordinary bytes in one go.
-      const std::size_t run_start = pos_;
-      while (!at_end() && peek() != '"' && peek() != '\\' && peek() >= 0x20) ++pos_;
-      // RFC 8259, section 8.1: JSON text is UTF-8. A string never spans a
-      // line, so the bad byte's column follows from its offset.
-      const std::size_t bad = invalid_utf8_offset(std::string_view(text_).substr(run_start, pos_ - run_start));
-      if (bad != std::string_view::npos)
-        fail({line_, run_start + bad - line_start_ + 1},
-             "invalid UTF-8 in a string (the string starts at " + describe_location(opened) + ")");
-      out.append(text_, run_start, pos_ - run_start);
-      if (at_end()) fail(opened, "unterminated string");
-      const unsigned char c = peek();
-      if (c == '"') {
-        ++pos_;
-        return out;
-      }
-      if (c < 0x20) {
-        char name[8];
-        std::snprintf(name, sizeof name, "U+%04X", static_cast<unsigned>(c));
-        fail(here(), std::string("unescaped control character ") + name +
-                         " in a string (the string starts at " + describe_location(opened) +
-                         ")");
-      }
-      // A backslash escape.
-      const JsonLocation escape = here();
-      ++pos_;
-      if (at_end()) fail(opened, "unterminated string");
-      const unsigned char kind = peek();
-      ++pos_;
-      switch (kind) {
-        case '"': out += '"'; break;
-        case '\\': out += '\\'; break;
-        case '/': out += '/'; break;
-        case 'b': out += '\b'; break;
-        case 'f': out += '\f'; break;
-        case 'n': out += '\n'; break;
-        case 'r': out += '\r'; break;
-        case 't': out += '\t'; break;
-        case 'u': {
-          std::uint32_t code_point = parse_hex4(escape);
-          if (code_point >= 0xDC00 && code_point <= 0xDFFF) {
-            fail(escape, "unpaired UTF-16 low surrogate in a \\u escape");
-          }
-          if (code_point >= 0xD800 && code_point <= 0xDBFF) {
-            // A high surrogate must be followed by an escaped low surrogate;
-            // together they encode one code point above U+FFFF.
-            const JsonLocation second = here();
-            if (peek_at(0) != '\\' || peek_at(1) != 'u') {
-              fail(escape, "unpaired UTF-16 high surrogate in a \\u escape");
-            }
-            pos_ += 2;
-            const std::uint32_t low = parse_hex4(second);
-            if (low < 0xDC00 || low > 0xDFFF) {
-              fail(escape, "UTF-16 high surrogate not followed by a low surrogate");
-            }
-            code_point = 0x10000 + ((code_point - 0xD800) << 10) + (low - 0xDC00);
-          }
-          append_utf8(out, code_point);
-          break;
-        }
-        default: {
-          const std::string shown = kind >= 0x21 && kind <= 0x7E
-                                        ? std::string("'\\") + static_cast<char>(kind) + "'"
-                                        : "'\\' followed by byte " + hex_byte(kind);
-          fail(escape, "invalid escape " + shown + " in a string");
-        }
-      }
-    }
+  unsigned char byte(std::size_t offset) const {
+    return offset < text_.size() ? static_cast<unsigned char>(text_[offset]) : 0;
   }
 
-  void skip_digits() {
-    while (!at_end() && is_digit(peek())) ++pos_;
+  // Start of the token the current event is about.
+  std::size_t token_start() const {
+    std::size_t offset = skip_space(cursor_);
+    if (byte(offset) == ',' || byte(offset) == ':') offset = skip_space(offset + 1);
+    return offset;
+  }
+
+  // End of the string token starting at `start`, which the library has
+  // checked: the first '"' not escaped by a backslash.
+  std::size_t string_end(std::size_t start) const {
+    std::size_t i = start + 1;
+    while (i < text_.size() && text_[i] != '"') i += text_[i] == '\\' ? 2 : 1;
+    return i + 1;
+  }
+
+  // End of the number starting at `start`: RFC 8259 section 6,
+  // -? (0 | [1-9][0-9]*) (. [0-9]+)? ([eE] [+-]? [0-9]+)?
+  std::size_t number_end(std::size_t start) const {
+    std::size_t i = start;
+    const auto digits = [&] {
+      while (is_digit(byte(i))) ++i;
+    };
+    if (byte(i) == '-') ++i;
+    if (byte(i) == '0') ++i;
+    else digits();
+    if (byte(i) == '.' && is_digit(byte(i + 1))) {
+      ++i;
+      digits();
+    }
+    if (byte(i) == 'e' || byte(i) == 'E') {
+      std::size_t exponent = i + 1;
+      if (byte(exponent) == '+' || byte(exponent) == '-') ++exponent;
+      if (is_digit(byte(exponent))) {
+        i = exponent;
+        digits();
+      }
+    }
+    return i;
+  }
+
+  std::string_view word_at(std::size_t start) const {
+    std::size_t end = start;
+    if (byte(end) == '-') ++end;
+    while (is_word_char(byte(end))) ++end;
+    return text_.substr(start, end - start);
   }
 
   // Words that are not JSON: NaN and Infinity get their own message since
   // they are the likely mistake (Python's json writes them by default).
-  [[noreturn]] void fail_word(const JsonLocation& location, std::string_view word) const {
+  [[noreturn]] void fail_word(std::size_t start) {
+    const std::string_view word = word_at(start);
     std::string lower;
     for (char c : word) lower += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
     const std::string_view bare = lower[0] == '-' ? std::string_view(lower).substr(1) : lower;
     if (bare == "nan" || bare == "infinity" || bare == "inf") {
-      fail(location, excerpt(word) + " is not a JSON number (JSON has no NaN or infinity)");
+      fail(start, excerpt(word) + " is not a JSON number (JSON has no NaN or infinity)");
     }
-    fail(location, "unexpected word '" + excerpt(word) + "', expected a JSON value");
+    fail(start, "unexpected word '" + excerpt(word) + "', expected a JSON value");
   }
 
-  JsonValue parse_word() {
-    const JsonLocation location = here();
-    const std::size_t start = pos_;
-    while (!at_end() && is_word_char(peek())) ++pos_;
-    const std::string_view word = text_.substr(start, pos_ - start);
-    if (word == "true") return JsonValue(true);
-    if (word == "false") return JsonValue(false);
-    if (word == "null") return JsonValue(nullptr);
-    fail_word(location, word);
+  // The byte at `offset` (or the end of input) is out of place. `context`
+  // follows "unexpected <byte>" and says where the byte is or what was
+  // expected instead (", expected ':'").
+  [[noreturn]] void fail_unexpected(std::size_t offset, const std::string& context) {
+    if (offset >= text_.size()) fail(offset, "unexpected end of input" + context);
+    const unsigned char c = byte(offset);
+    if (c == '/' && (byte(offset + 1) == '/' || byte(offset + 1) == '*')) {
+      fail(offset, "comments are not allowed in JSON");
+    }
+    if (c == '\'') fail(offset, "unexpected character '\\'', JSON strings use double quotes");
+    const bool printable = c >= 0x21 && c <= 0x7E;
+    const std::string what = printable ? std::string("character '") + static_cast<char>(c) + "'"
+                                       : "byte " + hex_byte(c);
+    fail(offset, "unexpected " + what + context);
   }
 
-  // RFC 8259 section 6: -? (0 | [1-9][0-9]*) (. [0-9]+)? ([eE] [+-]? [0-9]+)?
-  // The grammar is checked here; the conversion is std::from_chars, which
-  // unlike strtod does not depend on the C locale (Blender sets one).
-  JsonValue parse_number() {
-    const JsonLocation location = here();
-    const std::size_t start = pos_;
-    if (peek() == '-') {
-      ++pos_;
-      if (!at_end() && is_letter(peek())) {
-        while (!at_end() && is_word_char(peek())) ++pos_;
-        fail_word(location, text_.substr(start, pos_ - start));
-      }
-      if (at_end() || !is_digit(peek())) fail(location, "expected a digit after '-'");
+  [[noreturn]] void fail_unclosed(std::size_t offset) {
+    const bool is_object = stack_.back().value.is_object();
+    fail(offset, std::string("unexpected end of input, the ") + (is_object ? "object" : "array") +
+                     " opened at " + describe_location(stack_.back().value.location()) + " is not closed");
+  }
+
+  bool open(bool is_object) {
+    const std::size_t start = token_start();
+    if (stack_.size() >= kMaxJsonDepth) {
+      fail(start, "arrays and objects nest deeper than " + std::to_string(kMaxJsonDepth) + " levels");
     }
-    if (peek() == '0') {
-      ++pos_;
-      if (!at_end() && is_digit(peek())) fail(location, "a number must not have a leading zero");
+    cursor_ = start + 1;
+    Open level;
+    level.value = is_object ? JsonValue(JsonValue::Object{}) : JsonValue(JsonValue::Array{});
+    level.value.set_location(where_.at(start));
+    stack_.push_back(std::move(level));
+    expect_ = is_object ? Expect::FirstKey : Expect::FirstValue;
+    return true;
+  }
+
+  bool close() {
+    cursor_ = token_start() + 1;
+    JsonValue value = std::move(stack_.back().value);
+    stack_.pop_back();
+    return attach(std::move(value));
+  }
+
+  bool add(JsonValue value, std::size_t start) {
+    value.set_location(where_.at(start));
+    return attach(std::move(value));
+  }
+
+  bool attach(JsonValue value) {
+    if (stack_.empty()) {
+      root_ = std::move(value);
+      expect_ = Expect::End;
+      return true;
+    }
+    Open& parent = stack_.back();
+    if (parent.value.is_array()) {
+      parent.value.as_array().push_back(std::move(value));
     } else {
-      skip_digits();
+      parent.value.as_object().push_back(
+          JsonMember{std::move(parent.pending_key), parent.pending_key_location, std::move(value)});
     }
-    if (!at_end() && peek() == '.') {
-      ++pos_;
-      if (at_end() || !is_digit(peek())) {
-        fail(location, "expected a digit after the decimal point");
-      }
-      skip_digits();
+    expect_ = Expect::CommaOrEnd;
+    return true;
+  }
+
+  bool literal(std::string_view name, JsonValue value) {
+    const std::size_t start = token_start();
+    if (word_at(start) != name) fail_word(start);  // "truex"
+    cursor_ = start + name.size();
+    return add(std::move(value), start);
+  }
+
+  bool number() {
+    const std::size_t start = token_start();
+    const std::size_t end = number_end(start);
+    const std::size_t first_digit = start + (byte(start) == '-' ? 1 : 0);
+    if (byte(first_digit) == '0' && is_digit(byte(first_digit + 1))) {
+      fail(start, "a number must not have a leading zero");
     }
-    if (!at_end() && (peek() == 'e' || peek() == 'E')) {
-      ++pos_;
-      if (!at_end() && (peek() == '+' || peek() == '-')) ++pos_;
-      if (at_end() || !is_digit(peek())) fail(location, "expected a digit in the exponent");
-      skip_digits();
-    }
-    const std::string_view text = text_.substr(start, pos_ - start);
+    const std::string_view text = text_.substr(start, end - start);
     double value = 0.0;
     const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
     if (result.ec == std::errc::result_out_of_range) {
-      if (is_overflow(text)) fail(location, "number " + excerpt(text) + " overflows a double");
-      // Too small for a double: zero is the nearest value, as strtod gives.
+      // The library has already refused numbers too large for a double, so
+      // this one is too small: zero is the nearest value, as strtod gives.
       value = text[0] == '-' ? -0.0 : 0.0;
     } else if (result.ec != std::errc() || result.ptr != text.data() + text.size()) {
-      throw InternalError(describe_location(location) + ": std::from_chars rejected the number " +
+      throw InternalError(describe_location(where_.at(start)) + ": std::from_chars rejected the number " +
                           excerpt(text) + " that matches the JSON grammar");
     }
-    return JsonValue(value);
+    cursor_ = end;
+    return add(JsonValue(value), start);
+  }
+
+  // The library's message without its prefix, for errors this builder has
+  // no words of its own for.
+  [[noreturn]] void fail_as_library(std::size_t position, const std::string& what) {
+    std::string detail = what;
+    const std::size_t colon = detail.find(": ");
+    if (detail.rfind("[json.exception.parse_error", 0) == 0 && colon != std::string::npos) {
+      detail = detail.substr(colon + 2);
+    } else if (const std::size_t bracket = detail.find("] "); bracket != std::string::npos) {
+      detail = detail.substr(bracket + 2);
+    }
+    fail(position == 0 ? 0 : position - 1, detail);
+  }
+
+  // Called with the library's error; never returns. `position` counts the
+  // bytes the library had read, so position - 1 is where it stopped.
+  [[noreturn]] void diagnose(std::size_t position, const nlohmann::detail::exception& error) {
+    const std::string what = error.what();
+    std::size_t at = skip_space(cursor_);
+    Expect expect = expect_;
+    if (expect == Expect::End) fail_unexpected(at, " after the JSON value");
+    if (expect == Expect::Colon) {
+      if (at >= text_.size()) fail_unclosed(at);
+      if (byte(at) != ':') fail_unexpected(at, " after an object key, expected ':'");
+      at = skip_space(at + 1);
+      expect = Expect::Value;
+    } else if (expect == Expect::CommaOrEnd) {
+      const bool in_object = stack_.back().value.is_object();
+      const char closing = in_object ? '}' : ']';
+      if (at >= text_.size()) fail_unclosed(at);
+      if (byte(at) == closing) fail_as_library(position, what);
+      if (byte(at) != ',') {
+        fail_unexpected(at, in_object ? " in an object, expected ',' or '}'" : " in an array, expected ',' or ']'");
+      }
+      const std::size_t comma = at;
+      at = skip_space(at + 1);
+      if (byte(at) == closing && at < text_.size()) {
+        fail(comma, std::string("trailing comma before '") + closing + "'");
+      }
+      expect = in_object ? Expect::FirstKey : Expect::Value;
+    }
+    // `at` is where a value (or, in an object, a key) must start.
+    if (at >= text_.size()) {
+      if (stack_.empty()) fail(at, "unexpected end of input, expected a JSON value");
+      fail_unclosed(at);
+    }
+    const unsigned char c = byte(at);
+    if ((expect == Expect::FirstKey && c == '}') || (expect == Expect::FirstValue && c == ']')) {
+      fail_as_library(position, what);
+    }
+    if (expect == Expect::FirstKey && c != '"') fail_unexpected(at, " in an object, expected a string key");
+    if (c == '"') diagnose_string(at, position, what);
+    if (c == '-' || is_digit(c)) diagnose_number(at, error.id, position, what);
+    if (is_letter(c)) fail_word(at);
+    if (c == '[' || c == '{') fail_as_library(position, what);
+    fail_unexpected(at, ", expected a JSON value");
+  }
+
+  [[noreturn]] void diagnose_number(std::size_t start, int id, std::size_t position, const std::string& what) {
+    if (byte(start) == '-' && is_letter(byte(start + 1))) fail_word(start);  // -Infinity
+    if (id == 406) {  // out_of_range.406: number overflow
+      fail(start, "number " + excerpt(text_.substr(start, number_end(start) - start)) + " overflows a double");
+    }
+    if (what.find("expected digit after '-'") != std::string::npos) fail(start, "expected a digit after '-'");
+    if (what.find("expected digit after '.'") != std::string::npos) {
+      fail(start, "expected a digit after the decimal point");
+    }
+    if (what.find("after exponent") != std::string::npos) fail(start, "expected a digit in the exponent");
+    fail_as_library(position, what);
+  }
+
+  // The start of the last "\u" escape in the window of bytes [from, to].
+  std::size_t last_escape(std::size_t from, std::size_t to, bool high_surrogate_only) const {
+    for (std::size_t q = to + 1; q-- > from;) {
+      if (byte(q) != '\\' || byte(q + 1) != 'u') continue;
+      if (!high_surrogate_only) return q;
+      const unsigned char d = byte(q + 3);
+      if ((byte(q + 2) == 'd' || byte(q + 2) == 'D') && (d == '8' || d == '9' || (d >= 'a' && d <= 'b') ||
+                                                         (d >= 'A' && d <= 'B')))
+        return q;
+    }
+    return std::string_view::npos;
+  }
+
+  [[noreturn]] void diagnose_string(std::size_t start, std::size_t position, const std::string& what) {
+    const std::size_t at = position == 0 ? start : position - 1;
+    const std::string opened = " (the string starts at " + describe_location(where_.at(start)) + ")";
+    // Before the end-of-input check: a sequence cut short by the end of the
+    // input is reported as invalid UTF-8.
+    if (what.find("ill-formed UTF-8") != std::string::npos) {
+      const std::size_t bad = invalid_utf8_offset(text_.substr(start + 1, at - start));
+      if (bad != std::string_view::npos) fail(start + 1 + bad, "invalid UTF-8 in a string" + opened);
+    }
+    if (at >= text_.size() || what.find("missing closing quote") != std::string::npos) {
+      fail(start, "unterminated string");
+    }
+    const unsigned char c = byte(at);
+    if (what.find("control character") != std::string::npos && c < 0x20) {
+      char name[8];
+      std::snprintf(name, sizeof name, "U+%04X", static_cast<unsigned>(c));
+      fail(at, std::string("unescaped control character ") + name + " in a string" + opened);
+    }
+    if (what.find("forbidden character after backslash") != std::string::npos) {
+      const std::string shown = c >= 0x21 && c <= 0x7E ? std::string("'\\") + static_cast<char>(c) + "'"
+                                                        : "'\\' followed by byte " + hex_byte(c);
+      fail(at - 1, "invalid escape " + shown + " in a string");
+    }
+    // The library stops at the first byte that breaks the escape, so the
+    // escape at fault starts 2 to 5 bytes earlier (at - 1 may already be the
+    // backslash of the next escape: "\u12\u0041").
+    if (what.find("must be followed by 4 hex digits") != std::string::npos) {
+      const std::size_t escape = last_escape(at >= start + 5 ? at - 5 : start, at - 2, false);
+      if (escape != std::string_view::npos) fail(escape, "\\u in a string must be followed by 4 hex digits");
+    }
+    if (what.find("must follow U+D800..U+DBFF") != std::string::npos) {
+      const std::size_t escape = last_escape(at >= start + 5 ? at - 5 : start, at - 2, false);
+      if (escape != std::string_view::npos) fail(escape, "unpaired UTF-16 low surrogate in a \\u escape");
+    }
+    // Here the library stops just after the high surrogate's escape (at + 6
+    // or + 7: no "\u" follows) or at the end of the escape after it (at +
+    // 11), which may itself be a high surrogate: "\uD83D\uD83D".
+    if (what.find("must be followed by U+DC00..U+DFFF") != std::string::npos && at >= start + 6) {
+      const std::size_t escape = last_escape(at >= start + 12 ? at - 12 : start, at - 6, true);
+      if (escape != std::string_view::npos) {
+        if (byte(escape + 6) == '\\' && byte(escape + 7) == 'u') {
+          fail(escape, "UTF-16 high surrogate not followed by a low surrogate");
+        }
+        fail(escape, "unpaired UTF-16 high surrogate in a \\u escape");
+      }
+    }
+    fail_as_library(position, what);
   }
 
   std::string_view text_;
-  std::size_t pos_ = 0;
-  std::size_t line_ = 1;
-  std::size_t line_start_ = 0;  // offset of the first byte of the current line
+  std::size_t cursor_;  // just after the last token an event was for
+  Locator where_;
+  Expect expect_ = Expect::Value;
+  std::vector<Open> stack_;
+  JsonValue root_;
 };
 
 }  // namespace
@@ -533,7 +570,27 @@ const JsonValue* JsonValue::find(std::string_view key) const {
   return nullptr;
 }
 
-JsonValue parse_json(std::string_view text) { return Parser(text).parse_document(); }
+JsonValue parse_json(std::string_view text) {
+  // RFC 8259 section 8.1: a parser may ignore a leading byte order mark.
+  // Editors on some systems write one. The library skips it too; here it
+  // only moves where columns start counting.
+  const std::size_t first = text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0;
+  std::size_t value_start = first;
+  while (value_start < text.size() && is_space(static_cast<unsigned char>(text[value_start]))) ++value_start;
+  if (value_start == text.size()) {
+    Locator where(text, first);
+    throw JsonError(describe_location(where.at(value_start)) + ": " +
+                    (text.empty() ? "empty input, expected a JSON value" : "no JSON value, only whitespace"));
+  }
+  DocumentBuilder builder(text, first);
+  // strict: the text must end after the value; comments are not ignored.
+  // Every error reaches the builder, which throws, so false means a bug.
+  if (!Library::sax_parse(text.data(), text.data() + text.size(), &builder, nlohmann::json::input_format_t::json,
+                          /*strict=*/true, /*ignore_comments=*/false)) {
+    throw InternalError("nlohmann-json stopped parsing without reporting an error");
+  }
+  return builder.finish();
+}
 
 std::string format_json_number(double value) {
   if (std::isnan(value)) throw InvalidArgumentError("JSON cannot represent the number NaN");

@@ -1,12 +1,13 @@
-// A small, strict JSON (RFC 8259) document model, parser and writer.
+// A strict JSON (RFC 8259) document model, reader and writer.
 //
-// Stick figure files are JSON (../shared/FORMAT.md). Their readers must turn
+// Stick figure files are JSON (docs/FORMAT.md). Their readers must turn
 // every malformed input into an error that says where it went wrong, so the
-// parser keeps the line and column of every value, refuses everything the
+// reader keeps the line and column of every value, refuses everything the
 // RFC does not allow (comments, trailing commas, NaN, leading zeros, ...),
 // rejects duplicate object keys (which RFC 8259 leaves undefined, and which
 // would make a file mean different things to different readers), and limits
-// nesting so that hostile input cannot exhaust the stack.
+// nesting so that hostile input cannot exhaust memory. The parsing is
+// nlohmann-json's (json.cpp says which checks are added to it and why).
 //
 // The writer emits doubles as the shortest decimal text that reads back as
 // the same double, as FORMAT.md requires of every command's output.
@@ -114,8 +115,9 @@ struct JsonMember {
 const char* describe_kind(JsonValue::Kind kind);
 
 /// Deepest nesting of arrays and objects that parse_json accepts. Real
-/// documents (a figure file nests 3 levels) stay far below it; the parser
-/// recurses once per level, so the limit bounds its stack use.
+/// documents (a figure file nests 3 levels) stay far below it. The parser
+/// itself does not recurse, but code that walks the model does (the
+/// destructor, the writer), once per level; the limit bounds its stack use.
 constexpr std::size_t kMaxJsonDepth = 256;
 
 /// Parses one JSON text (RFC 8259): a single value surrounded by optional
