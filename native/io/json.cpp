@@ -439,6 +439,7 @@ class DocumentBuilder final : public nlohmann::json_sax<Library> {
 
   // The start of the last "\u" escape in the window of bytes [from, to].
   std::size_t last_escape(std::size_t from, std::size_t to, bool high_surrogate_only) const {
+    if (to < from || to >= text_.size()) return std::string_view::npos;
     for (std::size_t q = to + 1; q-- > from;) {
       if (byte(q) != '\\' || byte(q + 1) != 'u') continue;
       if (!high_surrogate_only) return q;
@@ -452,6 +453,7 @@ class DocumentBuilder final : public nlohmann::json_sax<Library> {
 
   [[noreturn]] void diagnose_string(std::size_t start, std::size_t position, const std::string& what) {
     const std::size_t at = position == 0 ? start : position - 1;
+    if (at < start) fail_as_library(position, what);  // the library failed before this string
     const std::string opened = " (the string starts at " + describe_location(where_.at(start)) + ")";
     // Before the end-of-input check: a sequence cut short by the end of the
     // input is reported as invalid UTF-8.
@@ -477,11 +479,11 @@ class DocumentBuilder final : public nlohmann::json_sax<Library> {
     // escape at fault starts 2 to 5 bytes earlier (at - 1 may already be the
     // backslash of the next escape: "\u12\u0041").
     if (what.find("must be followed by 4 hex digits") != std::string::npos) {
-      const std::size_t escape = last_escape(at >= start + 5 ? at - 5 : start, at - 2, false);
+      const std::size_t escape = last_escape(at >= start + 5 ? at - 5 : start, at >= 2 ? at - 2 : 0, false);
       if (escape != std::string_view::npos) fail(escape, "\\u in a string must be followed by 4 hex digits");
     }
     if (what.find("must follow U+D800..U+DBFF") != std::string::npos) {
-      const std::size_t escape = last_escape(at >= start + 5 ? at - 5 : start, at - 2, false);
+      const std::size_t escape = last_escape(at >= start + 5 ? at - 5 : start, at >= 2 ? at - 2 : 0, false);
       if (escape != std::string_view::npos) fail(escape, "unpaired UTF-16 low surrogate in a \\u escape");
     }
     // Here the library stops just after the high surrogate's escape (at + 6
