@@ -7,16 +7,34 @@ Input (written by scripts/benchmarks.sh under out/benchmarks/):
   run.json            machine, date, commit, command and runtime of the run
 
 Output: BENCHMARKS.md and docs/benchmarks/*.svg. Every number in them comes
-from the input files; the text around them only explains. Standard library
-only (Debian's /usr/bin/python3): the plots are written as SVG by hand.
+from the input files; the text around them only explains. Runs with Debian's
+/usr/bin/python3; the plots are drawn with matplotlib (Debian
+python3-matplotlib).
 """
 
 import argparse
-import html
 import json
 import math
 import os
 import sys
+
+try:
+    import matplotlib
+    matplotlib.use("svg")  # files only: no display, no GUI toolkit
+    import matplotlib.pyplot as plt
+    from matplotlib.ticker import FixedLocator, NullFormatter
+except ImportError as error:  # say which package, rather than a traceback
+    sys.exit(f"error: make_benchmarks: needs matplotlib (Debian: apt-get install python3-matplotlib): {error}")
+
+# Plots that change only when their data does: no date in the file, and ids
+# derived from a fixed salt instead of a random one, so that regenerating
+# the report without new numbers leaves the committed SVGs unchanged.
+matplotlib.rcParams.update({
+    "svg.hashsalt": "stickmorph-benchmarks",
+    "svg.fonttype": "none",  # text stays text, as in a hand-written SVG
+    "font.family": "sans-serif",
+    "font.size": 9,
+})
 
 METHODS = ["aronov", "sg2001", "improved"]
 # Stages of one improved case, in pipeline order: (key, label, per frame?).
@@ -163,7 +181,7 @@ def table(header, rows, align=None):
 
 
 # ---------------------------------------------------------------------------
-# SVG log-log plots
+# Log-log plots
 
 
 def nice_label(value):
@@ -172,18 +190,24 @@ def nice_label(value):
     return f"{value:g}"
 
 
+def dash_pattern(dash):
+    """'7,3' (on, off lengths in pixels, as in SVG) as a matplotlib linestyle."""
+    if not dash:
+        return "-"
+    return (0, tuple(float(length) for length in dash.split(",")))
+
+
 def loglog_svg(path, title, x_label, y_label, series, note=None, least=0.0):
     """series: list of dicts {label, points [(x, y)], color, dash}. Points with
     y <= least (at least those y <= 0, which a log axis cannot show) are left
     out; the caller says so in the note."""
     series = [dict(s, points=[(x, y) for x, y in s["points"] if y > least]) for s in series]
     series = [s for s in series if s["points"]]  # nothing to draw, nothing to list
-    width, height = 800, 460
-    left, right, top, bottom = 78, 250, 40, 58
     xs = [x for s in series for x, y in s["points"] if y > 0]
     ys = [y for s in series for x, y in s["points"] if y > 0]
     if not xs:
         xs, ys = [10, 10000], [1, 10]
+
     def axis_range(values):
         # Whole decades, except that a value just below a decade (n = 9)
         # does not stretch the axis by a whole empty decade.
@@ -192,69 +216,49 @@ def loglog_svg(path, title, x_label, y_label, series, note=None, least=0.0):
         hi = math.ceil(hi) if math.ceil(hi) - hi < 0.9 else hi + 0.03
         return lo, max(hi, lo + 1)
 
-    x0, x1 = axis_range(xs)
-    y0, y1 = axis_range(ys)
-    plot_w, plot_h = width - left - right, height - top - bottom
+    def decades(lo, hi):
+        exponents = range(math.floor(lo), math.ceil(hi) + 1)
+        major = [10.0 ** e for e in exponents if lo - 1e-9 <= e <= hi + 1e-9]
+        minor = [m * 10.0 ** e for e in exponents for m in (2, 5) if lo - 1e-9 <= e + math.log10(m) <= hi + 1e-9]
+        return major, minor
 
-    def px(x):
-        return left + (math.log10(x) - x0) / (x1 - x0) * plot_w
-
-    def py(y):
-        return top + plot_h - (math.log10(y) - y0) / (y1 - y0) * plot_h
-
-    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
-           f'viewBox="0 0 {width} {height}" font-family="sans-serif" font-size="12">',
-           f'<rect width="{width}" height="{height}" fill="white"/>',
-           f'<text x="{left + plot_w / 2}" y="22" text-anchor="middle" font-size="15">{html.escape(title)}</text>']
-    # Grid: decades solid, 2 and 5 light.
-    def inside(lo, hi, exponent):
-        return lo - 1e-9 <= exponent <= hi + 1e-9
-
-    for exponent in range(math.floor(x0), math.ceil(x1) + 1):
-        if inside(x0, x1, exponent):
-            x = px(10 ** exponent)
-            out.append(f'<line x1="{x:.1f}" y1="{top}" x2="{x:.1f}" y2="{top + plot_h}" stroke="#ccc"/>')
-            out.append(f'<text x="{x:.1f}" y="{top + plot_h + 18}" text-anchor="middle">'
-                       f'{nice_label(10 ** exponent)}</text>')
-        for minor in (2, 5):
-            if inside(x0, x1, exponent + math.log10(minor)):
-                xm = px(minor * 10 ** exponent)
-                out.append(f'<line x1="{xm:.1f}" y1="{top}" x2="{xm:.1f}" y2="{top + plot_h}" stroke="#eee"/>')
-    for exponent in range(math.floor(y0), math.ceil(y1) + 1):
-        if inside(y0, y1, exponent):
-            y = py(10 ** exponent)
-            out.append(f'<line x1="{left}" y1="{y:.1f}" x2="{left + plot_w}" y2="{y:.1f}" stroke="#ccc"/>')
-            out.append(f'<text x="{left - 6}" y="{y + 4:.1f}" text-anchor="end">{nice_label(10 ** exponent)}</text>')
-        for minor in (2, 5):
-            if inside(y0, y1, exponent + math.log10(minor)):
-                ym = py(minor * 10 ** exponent)
-                out.append(f'<line x1="{left}" y1="{ym:.1f}" x2="{left + plot_w}" y2="{ym:.1f}" stroke="#eee"/>')
-    out.append(f'<rect x="{left}" y="{top}" width="{plot_w}" height="{plot_h}" fill="none" stroke="#333"/>')
-    out.append(f'<text x="{left + plot_w / 2}" y="{height - 16}" text-anchor="middle">{html.escape(x_label)}</text>')
-    out.append(f'<text transform="translate(18,{top + plot_h / 2}) rotate(-90)" text-anchor="middle">'
-               f'{html.escape(y_label)}</text>')
+    # 800 by 460 pixels, as before: the plot on the left, the legend in a
+    # column on its right.
+    figure = plt.figure(figsize=(8.0, 4.6), dpi=100)
+    axes = figure.add_axes([78 / 800, 58 / 460, (800 - 78 - 250) / 800, (460 - 40 - 58) / 460])
+    axes.set_xscale("log")
+    axes.set_yscale("log")
+    for set_limits, set_ticks, set_minor_ticks, set_labels, (lo, hi), axis in (
+            (axes.set_xlim, axes.set_xticks, axes.xaxis.set_minor_locator, axes.set_xticklabels,
+             axis_range(xs), axes.xaxis),
+            (axes.set_ylim, axes.set_yticks, axes.yaxis.set_minor_locator, axes.set_yticklabels,
+             axis_range(ys), axes.yaxis)):
+        major, minor = decades(lo, hi)
+        set_limits(10.0 ** lo, 10.0 ** hi)
+        set_ticks(major)
+        set_labels([nice_label(v) for v in major])
+        set_minor_ticks(FixedLocator(minor))
+        axis.set_minor_formatter(NullFormatter())
+    # Grid: decades darker, 2 and 5 light.
+    axes.grid(True, which="major", color="#ccc", linewidth=0.8)
+    axes.grid(True, which="minor", color="#eee", linewidth=0.8)
+    axes.set_axisbelow(True)
+    for side in axes.spines.values():
+        side.set_color("#333")
     for s in series:
         points = sorted((x, y) for x, y in s["points"] if y > 0)
-        if not points:
-            continue
-        dash = f' stroke-dasharray="{s["dash"]}"' if s.get("dash") else ""
-        path_d = " ".join(f"{'M' if i == 0 else 'L'}{px(x):.1f},{py(y):.1f}" for i, (x, y) in enumerate(points))
-        out.append(f'<path d="{path_d}" fill="none" stroke="{s["color"]}" stroke-width="1.8"{dash}/>')
-        for x, y in points:
-            out.append(f'<circle cx="{px(x):.1f}" cy="{py(y):.1f}" r="2.8" fill="{s["color"]}"/>')
-    # Legend, right of the plot.
-    lx, ly = left + plot_w + 14, top + 6
-    for i, s in enumerate(series):
-        y = ly + 18 * i
-        dash = f' stroke-dasharray="{s["dash"]}"' if s.get("dash") else ""
-        out.append(f'<line x1="{lx}" y1="{y}" x2="{lx + 26}" y2="{y}" stroke="{s["color"]}" stroke-width="1.8"{dash}/>')
-        out.append(f'<circle cx="{lx + 13}" cy="{y}" r="2.8" fill="{s["color"]}"/>')
-        out.append(f'<text x="{lx + 32}" y="{y + 4}">{html.escape(s["label"])}</text>')
+        axes.plot([x for x, _ in points], [y for _, y in points], color=s["color"], linewidth=1.4,
+                  linestyle=dash_pattern(s.get("dash")), marker="o", markersize=4, label=s["label"])
+    axes.set_title(title, fontsize=12)
+    axes.set_xlabel(x_label)
+    axes.set_ylabel(y_label)
+    if series:
+        axes.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), frameon=False, handlelength=2.6, fontsize=8,
+                    borderaxespad=0.0)
     if note:
-        out.append(f'<text x="{left}" y="{height - 2}" font-size="10" fill="#555">{html.escape(note)}</text>')
-    out.append("</svg>")
-    with open(path, "w", encoding="utf-8") as f:
-        f.write("\n".join(out) + "\n")
+        figure.text(78 / 800, 2 / 460, note, fontsize=8, color="#555", va="bottom")
+    figure.savefig(path, format="svg", metadata={"Date": None})
+    plt.close(figure)
 
 
 # ---------------------------------------------------------------------------

@@ -22,6 +22,7 @@
 #include "stickmorph/figure_triangulation.h"
 #include "stickmorph/json.h"
 #include "stickmorph/morph.h"
+#include "stickmorph/io/result_files.h"
 #include "stickmorph/svg_output.h"
 #include "result_json.h"
 
@@ -164,9 +165,7 @@ int run_triangulate(const ParsedArguments& arguments) {
   const StickFigure source = read_figure_file(arguments.positional[0]);
   const StickFigure target = read_figure_file(arguments.positional[1]);
   const FigureTriangulation triangulation = triangulate_figures(source, target, options);
-  JsonWriter out(true);
-  cli::write_triangulation(out, triangulation);
-  std::vector<cli::OutputFile> files{{output, out.finish()}};
+  std::vector<cli::OutputFile> files{{output, triangulation_file_json(triangulation)}};
   if (svg)
     files.push_back({*svg, triangulation_svg(triangulation, source,
                                              "stickmorph triangulate --steiner " + steiner_method_name(options.method))});
@@ -185,86 +184,16 @@ std::string morph_document(const StickFigure& source, const std::vector<double>&
                            double triangulate_ms, double morph_ms, const std::string& method,
                            const MorphOptions& options, const FigureTriangulationOptions& triangulation_options,
                            const MorphStats* morph_stats, const std::vector<int>* invalid_frames) {
-  const std::size_t n = source.vertices.size();
-  JsonWriter out(true);
-  out.begin_object();
-  out.key("edges");
-  out.begin_array();
-  for (const Edge& e : source.edges) {
-    out.begin_array();
-    out.value(e[0]);
-    out.value(e[1]);
-    out.end_array();
-  }
-  out.end_array();
-  out.key("times");
-  out.begin_array();
-  for (double t : times) out.value(t);
-  out.end_array();
-  out.key("frames");
-  out.begin_array();
-  for (const auto& frame : frames) {
-    out.begin_array();
-    for (std::size_t v = 0; v < n; ++v) {
-      out.begin_array();
-      out.value(frame[v][0]);
-      out.value(frame[v][1]);
-      out.end_array();
-    }
-    out.end_array();
-  }
-  out.end_array();
-  out.key("triangulation");
-  if (triangulation) cli::write_triangulation(out, *triangulation);
-  else out.null();
-  out.key("stats");
-  out.begin_object();
-  out.key("steiner_vertices");
-  out.value(triangulation ? triangulation->steiner_vertices : 0);
-  out.key("triangles");
-  out.value(triangulation ? int(triangulation->triangles.size()) : 0);
-  out.key("milliseconds");
-  out.begin_object();
-  out.key("triangulate");
-  out.value(triangulate_ms);
-  out.key("morph");
-  out.value(morph_ms);
-  if (morph_stats) {
-    out.key("factorize");
-    out.value(morph_stats->factorize_ms);
-    out.key("solve");
-    out.value(morph_stats->solve_ms);
-    out.key("verify");
-    out.value(morph_stats->verify_ms);
-  }
-  out.end_object();
-  out.key("method");
-  out.value(method);
-  if (triangulation) {
-    out.key("steiner_method");
-    out.value(steiner_method_name(triangulation_options.method));
-    out.key("enclosure_sides");
-    out.value(triangulation_options.enclosure_sides);
-    out.key("weights");
-    out.value(weight_kind_name(options.weights));
-    out.key("verified");
-    out.value(options.verify);
-  }
-  if (morph_stats) {
-    out.key("refined_frames");
-    out.value(morph_stats->refined_frames);
-    out.key("factorizations");
-    out.value(morph_stats->factorizations);
-  }
-  if (invalid_frames) {
-    out.key("invalid_frames");
-    out.begin_array();
-    for (int f : *invalid_frames) out.value(f);
-    out.end_array();
-  }
-  out.end_object();
-  out.end_object();
-  return out.finish();
+  MorphProvenance how;
+  how.method = method;
+  how.triangulation = triangulation;
+  how.triangulation_options = triangulation_options;
+  how.options = options;
+  how.stats = morph_stats;
+  how.invalid_frames = invalid_frames;
+  how.triangulate_ms = triangulate_ms;
+  how.morph_ms = morph_ms;
+  return morph_file_json(source, times, frames, how);
 }
 
 int run_morph(const ParsedArguments& arguments) {

@@ -10,43 +10,6 @@
 #include "stickmorph/errors.h"
 
 namespace stickmorph::cli {
-namespace {
-
-void write_points(JsonWriter& out, const std::vector<Vec2>& points) {
-  out.begin_array();
-  for (const Vec2& p : points) {
-    out.begin_array();
-    out.value(p[0]);
-    out.value(p[1]);
-    out.end_array();
-  }
-  out.end_array();
-}
-
-}  // namespace
-
-void write_triangulation(JsonWriter& out, const FigureTriangulation& tri) {
-  out.begin_object();
-  out.key("figure_vertices");
-  out.value(tri.figure_vertices);
-  out.key("enclosure_vertices");
-  out.value(tri.enclosure_vertices);
-  out.key("steiner_vertices");
-  out.value(tri.steiner_vertices);
-  out.key("source");
-  write_points(out, tri.source);
-  out.key("target");
-  write_points(out, tri.target);
-  out.key("triangles");
-  out.begin_array();
-  for (const auto& t : tri.triangles) {
-    out.begin_array();
-    for (int v : t) out.value(v);
-    out.end_array();
-  }
-  out.end_array();
-  out.end_object();
-}
 
 void check_output_path(const std::string& option, const std::string& path) {
   if (path.empty()) throw InvalidArgumentError("option " + option + " needs a file name, got ''");

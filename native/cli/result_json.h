@@ -1,17 +1,21 @@
-// JSON documents the CLI writes (../shared/FORMAT.md).
+// Writing the CLI's output files to disk. Their contents (docs/FORMAT.md)
+// are written by the IO library: stickmorph/io/result_files.h.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "stickmorph/figure_triangulation.h"
-#include "stickmorph/json.h"
+#include "stickmorph/io/json.h"
+#include "stickmorph/io/result_files.h"
 
 namespace stickmorph::cli {
 
-/// The "triangulation" object of FORMAT.md: figure vertices, then the
-/// enclosure counter-clockwise, then Steiner vertices.
-void write_triangulation(JsonWriter& out, const FigureTriangulation& triangulation);
+/// Kept so that CLI code written against it on other branches still
+/// compiles; new code calls triangulation_file_json or morph_file_json.
+inline void write_triangulation(JsonWriter& out, const FigureTriangulation& triangulation) {
+  stickmorph::write_triangulation(out, triangulation);
+}
 
 /// One output of a command: where it goes and its whole content.
 struct OutputFile {

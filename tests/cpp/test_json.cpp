@@ -281,6 +281,40 @@ TEST_CASE("nesting depth is limited", "[json]") {
   CHECK_THAT(parse_error(objects), Contains("nest deeper than 256 levels"));
 }
 
+// Inputs where nlohmann-json, which parse_json uses, is laxer than FORMAT.md
+// or notices a problem somewhere other than the value at fault; parse_json
+// must still answer as for every other input.
+TEST_CASE("where the JSON library is lax or reports elsewhere, the rules hold", "[json]") {
+  // The library takes a NUL byte for the end of the input.
+  CHECK_THAT(parse_error(std::string("[1]\0x", 5)),
+             Equals("line 1, column 4: unexpected byte 0x00 after the JSON value"));
+  CHECK_THAT(parse_error(std::string("[1,\0]", 5)),
+             Equals("line 1, column 4: unexpected byte 0x00, expected a JSON value"));
+  // The library skips one byte order mark of its own accord; a second one is
+  // not whitespace.
+  CHECK_THAT(parse_error("\xEF\xBB\xBF\xEF\xBB\xBF[1]"),
+             Equals("line 1, column 1: unexpected byte 0xEF, expected a JSON value"));
+  // The library reads "null" and then fails at "x"; the word is at fault.
+  CHECK_THAT(parse_error("[nullx]"), Equals("line 1, column 2: unexpected word 'nullx', expected a JSON value"));
+  // The library reads "-0" as the integer 0.
+  CHECK(std::signbit(parse_json("[1.5, -0]").as_array()[1].as_number()));
+  // The library stops after the second escape; the first is at fault.
+  CHECK_THAT(parse_error(R"("\uD83D\uD83D")"),
+             Equals("line 1, column 2: UTF-16 high surrogate not followed by a low surrogate"));
+  // The library stops at the backslash of the next escape.
+  CHECK_THAT(parse_error(R"("\u12\u0041")"),
+             Equals("line 1, column 2: \\u in a string must be followed by 4 hex digits"));
+  // A sequence cut short by the closing quote or by the end of the input
+  // is named at its first byte, not where the library noticed it.
+  CHECK_THAT(parse_error("\"ab\xC3\""), StartsWith("line 1, column 4: invalid UTF-8 in a string"));
+  CHECK_THAT(parse_error("\"2\xC3"), StartsWith("line 1, column 3: invalid UTF-8 in a string"));
+  // A trailing comma after an empty key, and separators the library reports
+  // at the next token.
+  CHECK_THAT(parse_error(R"({"": 1,})"), Equals("line 1, column 7: trailing comma before '}'"));
+  CHECK_THAT(parse_error("[1 , ,2]"), Equals("line 1, column 6: unexpected character ',', expected a JSON value"));
+  CHECK_THAT(parse_error("\n\n  [1,\n 2,\n]"), Equals("line 4, column 3: trailing comma before ']'"));
+}
+
 TEST_CASE("accessors of the wrong kind throw JsonError naming the location", "[json]") {
   const JsonValue value = parse_json("[1, \"two\"]");
   try {

@@ -1,4 +1,4 @@
-#include "stickmorph/svg_output.h"
+#include "stickmorph/io/svg_output.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "stickmorph/figure_io.h"
+#include "stickmorph/io/figure_io.h"
 
 #include <array>
 #include <cerrno>
@@ -9,7 +9,7 @@
 #include <memory>
 
 #include "stickmorph/errors.h"
-#include "stickmorph/json.h"
+#include "stickmorph/io/json.h"
 
 namespace stickmorph {
 namespace {

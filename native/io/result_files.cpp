@@ -1,0 +1,132 @@
+#include "stickmorph/io/result_files.h"
+
+namespace stickmorph {
+namespace {
+
+void write_point(JsonWriter& out, const Vec2& p) {
+  out.begin_array();
+  out.value(p[0]);
+  out.value(p[1]);
+  out.end_array();
+}
+
+void write_points(JsonWriter& out, const std::vector<Vec2>& points) {
+  out.begin_array();
+  for (const Vec2& p : points) write_point(out, p);
+  out.end_array();
+}
+
+}  // namespace
+
+void write_triangulation(JsonWriter& out, const FigureTriangulation& tri) {
+  out.begin_object();
+  out.key("figure_vertices");
+  out.value(tri.figure_vertices);
+  out.key("enclosure_vertices");
+  out.value(tri.enclosure_vertices);
+  out.key("steiner_vertices");
+  out.value(tri.steiner_vertices);
+  out.key("source");
+  write_points(out, tri.source);
+  out.key("target");
+  write_points(out, tri.target);
+  out.key("triangles");
+  out.begin_array();
+  for (const auto& t : tri.triangles) {
+    out.begin_array();
+    for (int v : t) out.value(v);
+    out.end_array();
+  }
+  out.end_array();
+  out.end_object();
+}
+
+std::string triangulation_file_json(const FigureTriangulation& triangulation) {
+  JsonWriter out(true);
+  write_triangulation(out, triangulation);
+  return out.finish();
+}
+
+std::string morph_file_json(const StickFigure& source, const std::vector<double>& times,
+                            const std::vector<std::vector<Vec2>>& frames, const MorphProvenance& how) {
+  const std::size_t n = source.vertices.size();
+  const FigureTriangulation* triangulation = how.triangulation;
+  JsonWriter out(true);
+  out.begin_object();
+  out.key("edges");
+  out.begin_array();
+  for (const Edge& e : source.edges) {
+    out.begin_array();
+    out.value(e[0]);
+    out.value(e[1]);
+    out.end_array();
+  }
+  out.end_array();
+  out.key("times");
+  out.begin_array();
+  for (double t : times) out.value(t);
+  out.end_array();
+  out.key("frames");
+  out.begin_array();
+  for (const auto& frame : frames) {
+    // Only the figure's vertices: the enclosure and Steiner nodes are in
+    // the triangulation, and moving them is the morph's business.
+    out.begin_array();
+    for (std::size_t v = 0; v < n; ++v) write_point(out, frame[v]);
+    out.end_array();
+  }
+  out.end_array();
+  out.key("triangulation");
+  if (triangulation) write_triangulation(out, *triangulation);
+  else out.null();
+  out.key("stats");
+  out.begin_object();
+  out.key("steiner_vertices");
+  out.value(triangulation ? triangulation->steiner_vertices : 0);
+  out.key("triangles");
+  out.value(triangulation ? int(triangulation->triangles.size()) : 0);
+  out.key("milliseconds");
+  out.begin_object();
+  out.key("triangulate");
+  out.value(how.triangulate_ms);
+  out.key("morph");
+  out.value(how.morph_ms);
+  if (how.stats) {
+    out.key("factorize");
+    out.value(how.stats->factorize_ms);
+    out.key("solve");
+    out.value(how.stats->solve_ms);
+    out.key("verify");
+    out.value(how.stats->verify_ms);
+  }
+  out.end_object();
+  out.key("method");
+  out.value(how.method);
+  if (triangulation) {
+    out.key("steiner_method");
+    out.value(steiner_method_name(how.triangulation_options.method));
+    out.key("enclosure_sides");
+    out.value(how.triangulation_options.enclosure_sides);
+    out.key("weights");
+    out.value(weight_kind_name(how.options.weights));
+    out.key("verified");
+    out.value(how.options.verify);
+  }
+  if (how.stats) {
+    out.key("refined_frames");
+    out.value(how.stats->refined_frames);
+    out.key("factorizations");
+    out.value(how.stats->factorizations);
+  }
+  if (how.invalid_frames) {
+    out.key("invalid_frames");
+    out.begin_array();
+    for (int f : *how.invalid_frames) out.value(f);
+    out.end_array();
+  }
+  out.end_object();
+  out.end_object();
+  return out.finish();
+}
+
+}  // namespace stickmorph

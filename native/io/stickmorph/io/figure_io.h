@@ -1,0 +1,27 @@
+// Reading stick figure files (../shared/FORMAT.md, "Stick figure file").
+#pragma once
+
+#include <string>
+
+#include "stickmorph/stick_figure.h"
+
+namespace stickmorph {
+
+/// Parses the JSON text of a stick figure file and validates the figure.
+///
+/// @param text    file contents
+/// @param origin  name used in messages (usually the path)
+/// @throws JsonError for malformed JSON or a wrong shape, naming line and
+///         column; InvalidFigureError (message prefixed with origin) for a
+///         figure that breaks a rule of make_stick_figure.
+StickFigure parse_figure(const std::string& text, const std::string& origin);
+
+/// Reads and parses the file at `path`. Throws JsonError if it cannot be read.
+StickFigure read_figure_file(const std::string& path);
+
+/// The figure as the JSON text of a stick figure file, named `name`, with
+/// shortest round-trip decimals: parse_figure reads back the same doubles
+/// (test regression files, the fuzzer's round-trip oracle).
+std::string figure_json(const StickFigure& figure, const std::string& name);
+
+}  // namespace stickmorph

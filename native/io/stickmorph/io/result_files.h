@@ -1,0 +1,53 @@
+// The files the commands write (docs/FORMAT.md, "The morph file" and "The
+// triangulation file"), written here and nowhere else: the CLI gives the
+// results and writes the returned text to disk.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "stickmorph/figure_triangulation.h"
+#include "stickmorph/io/json.h"
+#include "stickmorph/morph.h"
+#include "stickmorph/stick_figure.h"
+
+namespace stickmorph {
+
+/// How a morph was made: what the morph file's "triangulation" and "stats"
+/// say besides the frames.
+struct MorphProvenance {
+  /// "barycentric" (the paper's morph) or "linear" (the straight-line
+  /// baseline, FORMAT.md: --method linear).
+  std::string method = "barycentric";
+  /// The triangulation the barycentric morph used; null for the linear
+  /// baseline, which uses none ("triangulation": null, both counts 0, and
+  /// no steiner_method, enclosure_sides, weights or verified).
+  const FigureTriangulation* triangulation = nullptr;
+  FigureTriangulationOptions triangulation_options;  ///< written with a triangulation
+  MorphOptions options;                              ///< weights and verify, written with a triangulation
+  /// The barycentric morph's statistics (factorize, solve and verify times,
+  /// refined_frames, factorizations); null to leave them out.
+  const MorphStats* stats = nullptr;
+  /// The linear baseline's self-intersecting frames ("invalid_frames");
+  /// null to leave the field out.
+  const std::vector<int>* invalid_frames = nullptr;
+  double triangulate_ms = 0;  ///< wall-clock time of the triangulation
+  double morph_ms = 0;        ///< wall-clock time of the morph
+};
+
+/// The morph file: the figure's edges, `times`, the first n positions of
+/// every frame (frames[f] may hold more, all triangulation nodes), the
+/// triangulation and the stats, pretty-printed, ending with a newline.
+/// @throws InvalidArgumentError for a non-finite number (JSON has none).
+std::string morph_file_json(const StickFigure& source, const std::vector<double>& times,
+                            const std::vector<std::vector<Vec2>>& frames, const MorphProvenance& how);
+
+/// The triangulation file: the triangulation object on its own,
+/// pretty-printed, ending with a newline.
+std::string triangulation_file_json(const FigureTriangulation& triangulation);
+
+/// The triangulation object of both files: figure vertices, then the
+/// enclosure counter-clockwise, then Steiner vertices.
+void write_triangulation(JsonWriter& out, const FigureTriangulation& triangulation);
+
+}  // namespace stickmorph
