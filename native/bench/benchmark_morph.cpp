@@ -47,6 +47,7 @@
 #include "stickmorph/frame_verification.h"
 #include "stickmorph/json.h"
 #include "stickmorph/morph.h"
+#include "stickmorph/morph_stick_figures.h"
 
 namespace stickmorph::bench {
 namespace {
@@ -268,16 +269,13 @@ std::string run_improved(const std::string& family, int requested, int frames) {
   record.set("n", n).set("edges", int(source.edges.size())).set("twist", figures.twist);
   record.set("generate_ms", figures.generate_ms).set("validate_ms", figures.validate_ms);
 
-  FigureTriangulationStats stats;
-  auto start = Clock::now();
-  const FigureTriangulation tri = triangulate_figures(source, figures.target, {}, &stats);
-  add_triangulation_stats(record, ms_since(start), stats, tri);
-
-  MorphOptions options;
+  // The engine's one entry, as the CLI and the module run it.
+  MorphStickFiguresOptions options;
   options.frames = frames;
-  start = Clock::now();
-  const MorphResult morph = morph_triangulation(tri, source, options);
-  record.set("morph_ms", ms_since(start))
+  const MorphStickFiguresResult morph = morph_stick_figures(source, figures.target, options);
+  const FigureTriangulation& tri = *morph.triangulation;
+  add_triangulation_stats(record, morph.stats.triangulate_ms, morph.stats.triangulation, tri);
+  record.set("morph_ms", morph.stats.morph_ms)
       .set("frames", frames)
       .set("morph_setup_ms", morph.stats.factorize_ms)
       .set("solve_ms", morph.stats.solve_ms)
@@ -290,14 +288,14 @@ std::string run_improved(const std::string& family, int requested, int frames) {
   // the morph's own bookkeeping.
   const Decomposition decomposition = decompose(source);
   int invalid = 0;
-  for (const std::vector<Vec2>& frame : morph.frames) {
-    const std::vector<Vec2> figure(frame.begin(), frame.begin() + n);
-    if (!is_frame_valid(source, decomposition, figure)) ++invalid;
-  }
+  for (const std::vector<Vec2>& frame : morph.frames)
+    if (!is_frame_valid(source, decomposition, frame)) ++invalid;
   record.set("invalid_frames", invalid);
 
-  std::vector<int> linear_invalid;
-  linear_morph(source, figures.target, frames, &linear_invalid);
+  MorphStickFiguresOptions straight;
+  straight.method = MorphMethod::Linear;
+  straight.frames = frames;
+  const std::vector<int> linear_invalid = morph_stick_figures(source, figures.target, straight).stats.invalid_frames;
   record.set("linear_invalid_frames", int(linear_invalid.size()));
   record.set("linear_first_invalid", linear_invalid.empty() ? -1 : linear_invalid.front());
   record.set("fresh_lu_ms", fresh_lu_ms(tri));

@@ -5,12 +5,12 @@
 // exit code 2. Adding a command means writing its run function and one
 // table entry; argument checking, --help and error reporting come for free.
 #include <charconv>
-#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <iostream>
 #include <map>
 #include <new>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,6 +22,7 @@
 #include "stickmorph/figure_triangulation.h"
 #include "stickmorph/json.h"
 #include "stickmorph/morph.h"
+#include "stickmorph/morph_stick_figures.h"
 #include "stickmorph/svg_output.h"
 #include "result_json.h"
 
@@ -118,28 +119,24 @@ const std::string& required_option(const ParsedArguments& arguments, std::string
   return *value;
 }
 
-// A whole number option in [least, most], e.g. --frames.
-int integer_option(const ParsedArguments& arguments, std::string_view name, int fallback, int least, int most) {
+// A whole number option, e.g. --frames; its range is the engine's to check
+// (argument_limits.h), so that the CLI and the module refuse the same values.
+std::optional<long long> integer_option(const ParsedArguments& arguments, std::string_view name) {
   const std::string* text = option_value(arguments, name);
-  if (text == nullptr) return fallback;
-  int value = 0;
+  if (text == nullptr) return std::nullopt;
+  long long value = 0;
   const char* end = text->data() + text->size();
   const auto [ptr, error] = std::from_chars(text->data(), end, value);
   if (error != std::errc() || ptr != end)
     throw InvalidArgumentError("option " + std::string(name) + " needs a whole number, got " + quoted(*text));
-  if (value < least)
-    throw InvalidArgumentError("option " + std::string(name) + " must be at least " + std::to_string(least) +
-                               ", got " + std::to_string(value));
-  if (value > most)
-    throw InvalidArgumentError("option " + std::string(name) + " must be at most " + std::to_string(most) +
-                               ", got " + std::to_string(value));
   return value;
 }
 
 FigureTriangulationOptions triangulation_options(const ParsedArguments& arguments) {
   FigureTriangulationOptions options;
   if (const std::string* name = option_value(arguments, "--steiner")) options.method = parse_steiner_method(*name);
-  options.enclosure_sides = integer_option(arguments, "--enclosure-sides", 6, 3, kMaxEnclosureSides);
+  if (const auto sides = integer_option(arguments, "--enclosure-sides"))
+    options.enclosure_sides = check_enclosure_sides(*sides, OptionSpelling::CommandLine);
   return options;
 }
 
@@ -174,18 +171,13 @@ int run_triangulate(const ParsedArguments& arguments) {
   return kExitSuccess;
 }
 
-double milliseconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-// FORMAT.md's morph document. `triangulation` is null for the linear
-// baseline, which uses none.
-std::string morph_document(const StickFigure& source, const std::vector<double>& times,
-                           const std::vector<std::vector<Vec2>>& frames, const FigureTriangulation* triangulation,
-                           double triangulate_ms, double morph_ms, const std::string& method,
-                           const MorphOptions& options, const FigureTriangulationOptions& triangulation_options,
-                           const MorphStats* morph_stats, const std::vector<int>* invalid_frames) {
+// FORMAT.md's morph document. The linear baseline has no triangulation and
+// reports which frames self-intersect instead of the solver's counters.
+std::string morph_document(const StickFigure& source, const MorphStickFiguresResult& result, MorphMethod method) {
   const std::size_t n = source.vertices.size();
+  const FigureTriangulation* triangulation = result.triangulation ? &*result.triangulation : nullptr;
+  const bool linear = method == MorphMethod::Linear;
+  const MorphStickFiguresStats& stats = result.stats;
   JsonWriter out(true);
   out.begin_object();
   out.key("edges");
@@ -199,11 +191,11 @@ std::string morph_document(const StickFigure& source, const std::vector<double>&
   out.end_array();
   out.key("times");
   out.begin_array();
-  for (double t : times) out.value(t);
+  for (double t : result.times) out.value(t);
   out.end_array();
   out.key("frames");
   out.begin_array();
-  for (const auto& frame : frames) {
+  for (const auto& frame : result.frames) {
     out.begin_array();
     for (std::size_t v = 0; v < n; ++v) {
       out.begin_array();
@@ -220,46 +212,43 @@ std::string morph_document(const StickFigure& source, const std::vector<double>&
   out.key("stats");
   out.begin_object();
   out.key("steiner_vertices");
-  out.value(triangulation ? triangulation->steiner_vertices : 0);
+  out.value(stats.steiner_vertices);
   out.key("triangles");
-  out.value(triangulation ? int(triangulation->triangles.size()) : 0);
+  out.value(stats.triangles);
   out.key("milliseconds");
   out.begin_object();
   out.key("triangulate");
-  out.value(triangulate_ms);
+  out.value(stats.triangulate_ms);
   out.key("morph");
-  out.value(morph_ms);
-  if (morph_stats) {
+  out.value(stats.morph_ms);
+  if (!linear) {
     out.key("factorize");
-    out.value(morph_stats->factorize_ms);
+    out.value(stats.factorize_ms);
     out.key("solve");
-    out.value(morph_stats->solve_ms);
+    out.value(stats.solve_ms);
     out.key("verify");
-    out.value(morph_stats->verify_ms);
+    out.value(stats.verify_ms);
   }
   out.end_object();
   out.key("method");
-  out.value(method);
-  if (triangulation) {
+  out.value(morph_method_name(method));
+  if (!linear) {
     out.key("steiner_method");
-    out.value(steiner_method_name(triangulation_options.method));
+    out.value(steiner_method_name(result.triangulation_options.method));
     out.key("enclosure_sides");
-    out.value(triangulation_options.enclosure_sides);
+    out.value(result.triangulation_options.enclosure_sides);
     out.key("weights");
-    out.value(weight_kind_name(options.weights));
+    out.value(weight_kind_name(result.morph_options.weights));
     out.key("verified");
-    out.value(options.verify);
-  }
-  if (morph_stats) {
+    out.value(result.morph_options.verify);
     out.key("refined_frames");
-    out.value(morph_stats->refined_frames);
+    out.value(stats.refined_frames);
     out.key("factorizations");
-    out.value(morph_stats->factorizations);
-  }
-  if (invalid_frames) {
+    out.value(stats.factorizations);
+  } else {
     out.key("invalid_frames");
     out.begin_array();
-    for (int f : *invalid_frames) out.value(f);
+    for (int f : stats.invalid_frames) out.value(f);
     out.end_array();
   }
   out.end_object();
@@ -270,68 +259,52 @@ std::string morph_document(const StickFigure& source, const std::vector<double>&
 int run_morph(const ParsedArguments& arguments) {
   const std::string& output = required_option(arguments, "morph", "--output");
   const std::string* svg = check_outputs(arguments, "morph", output);
-  MorphOptions options;
-  options.frames = integer_option(arguments, "--frames", 50, 2, kMaxMorphFrames);
-  if (const std::string* name = option_value(arguments, "--weights")) options.weights = parse_weight_kind(*name);
-  options.verify = option_value(arguments, "--no-verify") == nullptr;
-  const std::string method = option_value(arguments, "--method") ? *option_value(arguments, "--method") : "barycentric";
-  if (method != "barycentric" && method != "linear")
-    throw InvalidArgumentError("unknown morph method '" + method + "' (choose barycentric or linear)");
   const bool overlay = option_value(arguments, "--svg-triangulation") != nullptr;
   const bool compare_linear = option_value(arguments, "--svg-compare-linear") != nullptr;
-  // Options that would have no effect are refused rather than ignored, so
-  // that a user who asked for a drawing or a setting does not silently get
-  // something else.
+  MorphStickFiguresOptions options;
+  options.spelling = OptionSpelling::CommandLine;
+  // Checked at once (check_morph_options checks it again) so that a bad
+  // count is reported before the drawing options, as it always was.
+  if (const auto frames = integer_option(arguments, "--frames"))
+    options.frames = check_frames(*frames, OptionSpelling::CommandLine);
+  if (const std::string* name = option_value(arguments, "--weights")) options.weights = parse_weight_kind(*name);
+  if (const std::string* name = option_value(arguments, "--method")) options.method = parse_morph_method(*name);
+  // Drawing options that would have no effect are refused rather than
+  // ignored, like the engine's options that --method linear would ignore.
   for (const char* drawing : {"--svg-triangulation", "--svg-compare-linear"})
     if (option_value(arguments, drawing) && svg == nullptr)
       throw InvalidArgumentError("morph: option " + std::string(drawing) + " needs --svg FILE");
   if (overlay && compare_linear)
     throw InvalidArgumentError("morph: --svg-triangulation and --svg-compare-linear cannot be combined");
-  if (method == "linear") {
-    for (const char* unused : {"--svg-triangulation", "--svg-compare-linear", "--no-verify", "--weights",
-                               "--steiner", "--enclosure-sides"})
-      if (option_value(arguments, unused))
-        throw InvalidArgumentError("morph: option " + std::string(unused) +
+  if (options.method == MorphMethod::Linear)
+    for (const char* drawing : {"--svg-triangulation", "--svg-compare-linear"})
+      if (option_value(arguments, drawing))
+        throw InvalidArgumentError("morph: option " + std::string(drawing) +
                                    " has no effect with --method linear (the straight-line morph uses no "
                                    "triangulation)");
-  }
-  const FigureTriangulationOptions tri_options = triangulation_options(arguments);
+  if (option_value(arguments, "--no-verify")) options.verify = false;
+  if (const std::string* name = option_value(arguments, "--steiner")) options.steiner = parse_steiner_method(*name);
+  options.enclosure_sides = integer_option(arguments, "--enclosure-sides");
+  // The triangulation drawn under the filmstrip needs every node's position.
+  options.keep_node_frames = overlay;
+  check_morph_options(options);
   const StickFigure source = read_figure_file(arguments.positional[0]);
   const StickFigure target = read_figure_file(arguments.positional[1]);
   const std::string title = "stickmorph morph: " + (source.name.empty() ? arguments.positional[0] : source.name) +
                             " -> " + (target.name.empty() ? arguments.positional[1] : target.name);
 
-  if (method == "linear") {
-    // The paper's Figure 8d baseline: frames that self-intersect are
-    // reported, not refused.
-    require_compatible(source, target);
-    const auto start = std::chrono::steady_clock::now();
-    std::vector<int> invalid;
-    const MorphResult result = linear_morph(source, target, options.frames, &invalid);
-    const double ms = milliseconds_since(start);
-    std::vector<cli::OutputFile> files{{output, morph_document(source, result.times, result.frames, nullptr, 0, ms,
-                                                               method, options, tri_options, nullptr, &invalid)}};
-    if (svg) files.push_back({*svg, filmstrip_svg(source, result.frames, result.times, 7, nullptr, title)});
-    cli::write_files_atomically(files);
-    return kExitSuccess;
-  }
-  auto start = std::chrono::steady_clock::now();
-  const FigureTriangulation triangulation = triangulate_figures(source, target, tri_options);
-  const double triangulate_ms = milliseconds_since(start);
-  start = std::chrono::steady_clock::now();
-  const MorphResult result = morph_triangulation(triangulation, source, options);
-  const double morph_ms = milliseconds_since(start);
-  std::vector<cli::OutputFile> files{{output, morph_document(source, result.times, result.frames, &triangulation,
-                                                             triangulate_ms, morph_ms, method, options, tri_options,
-                                                             &result.stats, nullptr)}};
+  const MorphStickFiguresResult result = morph_stick_figures(source, target, options);
+  std::vector<cli::OutputFile> files{{output, morph_document(source, result, options.method)}};
   if (svg && compare_linear) {
-    std::vector<int> invalid;
-    const MorphResult linear = linear_morph(source, target, options.frames, &invalid);
-    files.push_back({*svg, comparison_filmstrip_svg(source, result.frames, linear.frames, result.times, 7, invalid,
-                                                    title)});
+    MorphStickFiguresOptions linear;
+    linear.method = MorphMethod::Linear;
+    linear.frames = options.frames;
+    const MorphStickFiguresResult straight = morph_stick_figures(source, target, linear);
+    files.push_back({*svg, comparison_filmstrip_svg(source, result.frames, straight.frames, result.times, 7,
+                                                    straight.stats.invalid_frames, title)});
   } else if (svg) {
-    files.push_back({*svg, filmstrip_svg(source, result.frames, result.times, 7, overlay ? &triangulation : nullptr,
-                                         title)});
+    files.push_back({*svg, filmstrip_svg(source, overlay ? result.node_frames : result.frames, result.times, 7,
+                                         overlay ? &*result.triangulation : nullptr, title)});
   }
   cli::write_files_atomically(files);
   return kExitSuccess;
