@@ -118,7 +118,9 @@ Returns:
   "edges" (#E by 2 int64 ndarray), in file order.
 
 Raises:
-  JsonError: unreadable file, malformed JSON or a field of the wrong shape.
+  FileError: the file cannot be read (an OSError with errno and filename:
+    FigureFileNotFoundError is a FileNotFoundError, and so on).
+  JsonError: malformed JSON or a field of the wrong shape.
   InvalidFigureError: the file describes an invalid figure.)doc");
 
   m.def(

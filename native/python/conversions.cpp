@@ -189,7 +189,9 @@ sm::StickFigure make_named_figure(py::handle vertices, py::handle edges,
   try {
     return make_figure(vertices, edges, vertices_name, edges_name);
   } catch (const sm::InvalidFigureError& e) {
-    throw sm::InvalidFigureError(e.defect(), figure + ": " + e.what(), e.vertices(), e.edges());
+    // The role travels as an attribute; the message prefix stays for the
+    // add-on, which still reads it to put object names in its reports.
+    throw sm::InvalidFigureError(e.defect(), figure + ": " + e.what(), e.vertices(), e.edges(), figure);
   }
 }
 
@@ -207,14 +209,14 @@ void check_polygon_coordinates(const std::vector<sm::Vec2>& positions, const std
         throw sm::InvalidFigureError(sm::FigureDefect::NonFiniteCoordinate,
                                      prefix + std::to_string(v) + " has a non-finite coordinate (" +
                                          axis[c] + " = " + sm::format_double(value) + ")",
-                                     {static_cast<int>(v)});
+                                     {static_cast<int>(v)}, {}, role);
       if (std::abs(value) > sm::kMaxCoordinateMagnitude)
         throw sm::InvalidFigureError(sm::FigureDefect::CoordinateTooLarge,
                                      prefix + std::to_string(v) + " has coordinate " + axis[c] +
                                          " = " + sm::format_double(value) +
                                          ", beyond the supported magnitude " +
                                          sm::format_double(sm::kMaxCoordinateMagnitude),
-                                     {static_cast<int>(v)});
+                                     {static_cast<int>(v)}, {}, role);
     }
 }
 

@@ -84,18 +84,24 @@ MorphStickFiguresResult morph_stick_figures(const StickFigure& source, const Sti
     return result;
   }
 
-  // Steps 1-3.
-  auto start = std::chrono::steady_clock::now();
-  FigureTriangulation triangulation =
-      triangulate_figures(source, target, result.triangulation_options, &stats.triangulation);
-  stats.triangulate_ms = milliseconds_since(start);
+  // Steps 1-4. The options were checked above, and steps 1-3 build the
+  // triangulation step 4 morphs, so an InvalidArgumentError from inside is
+  // about data the engine made itself: a bug, not the caller's mistake.
+  FigureTriangulation triangulation;
+  MorphResult morphed;
+  try {
+    auto start = std::chrono::steady_clock::now();
+    triangulation = triangulate_figures(source, target, result.triangulation_options, &stats.triangulation);
+    stats.triangulate_ms = milliseconds_since(start);
+    start = std::chrono::steady_clock::now();
+    morphed = morph_triangulation(triangulation, source, result.morph_options);
+    stats.morph_ms = milliseconds_since(start);
+  } catch (const InvalidArgumentError& error) {
+    throw InternalError(std::string("morph_stick_figures: the engine refused its own intermediate result: ") +
+                        error.what());
+  }
   stats.steiner_vertices = triangulation.steiner_vertices;
   stats.triangles = int(triangulation.triangles.size());
-
-  // Step 4.
-  start = std::chrono::steady_clock::now();
-  MorphResult morphed = morph_triangulation(triangulation, source, result.morph_options);
-  stats.morph_ms = milliseconds_since(start);
   stats.factorize_ms = morphed.stats.factorize_ms;
   stats.solve_ms = morphed.stats.solve_ms;
   stats.verify_ms = morphed.stats.verify_ms;

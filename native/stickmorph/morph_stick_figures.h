@@ -104,9 +104,12 @@ struct MorphStickFiguresResult {
 void check_morph_options(const MorphStickFiguresOptions& options);
 
 /// Algorithm 3 on two figures whose vertices correspond by index.
-/// @throws InvalidArgumentError (check_morph_options), IncompatibleFiguresError,
+/// @throws InvalidArgumentError (check_morph_options), IncompatibleFiguresError
+///         (with the compatibility report's kind and vertices),
 ///         VerificationError (a triangulation or frame that could not be
-///         verified), as triangulate_figures and morph_triangulation do.
+///         verified), as triangulate_figures and morph_triangulation do;
+///         InternalError where those would blame an argument the engine
+///         built itself.
 MorphStickFiguresResult morph_stick_figures(const StickFigure& source, const StickFigure& target,
                                             const MorphStickFiguresOptions& options = {});
 

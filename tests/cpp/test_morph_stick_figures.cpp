@@ -2,6 +2,7 @@
 // and the option checks (argument_limits.h) every interface relies on.
 #include <catch2/catch.hpp>
 
+#include <cerrno>
 #include <limits>
 #include <set>
 #include <string>
@@ -213,4 +214,42 @@ TEST_CASE("parse_morph_method knows both methods") {
   CHECK(parse_morph_method("linear") == MorphMethod::Linear);
   CHECK(morph_method_name(parse_morph_method("barycentric")) == "barycentric");
   CHECK_THROWS_WITH(parse_morph_method("spline"), "unknown morph method 'spline' (choose barycentric or linear)");
+}
+
+TEST_CASE("the pipeline's errors carry what callers need without parsing messages") {
+  SECTION("a file that cannot be read is a FileError with errno, not a JsonError") {
+    const std::string missing = std::string(STICKMORPH_TEST_DATA) + "/no_such_figure.json";
+    try {
+      read_figure_file(missing);
+      FAIL("read a missing file");
+    } catch (const FileError& e) {
+      CHECK(e.error_number() == ENOENT);
+      CHECK(e.path() == missing);
+      CHECK(std::string(e.what()) == missing + ": cannot read file: No such file or directory");
+    }
+    try {
+      read_figure_file(STICKMORPH_TEST_DATA);
+      FAIL("read a directory");
+    } catch (const FileError& e) {
+      CHECK(e.error_number() == EISDIR);
+    }
+  }
+  SECTION("incompatible figures carry the report's kind and vertices") {
+    const Pair pair = read_pair("incompatible", "junction_rotation");
+    const CompatibilityReport report = check_compatibility(pair.source, pair.target);
+    REQUIRE_FALSE(report.compatible());
+    for (const MorphMethod method : {MorphMethod::Barycentric, MorphMethod::Linear}) {
+      MorphStickFiguresOptions options;
+      options.method = method;
+      try {
+        morph_stick_figures(pair.source, pair.target, options);
+        FAIL("morphed incompatible figures");
+      } catch (const IncompatibleFiguresError& e) {
+        CHECK(e.kind() == Incompatibility::RotationDiffers);
+        CHECK(e.kind() == report.kind);
+        CHECK(e.vertices() == report.vertices);
+        CHECK(std::string(e.what()) == "incompatible figures: " + report.reason);
+      }
+    }
+  }
 }

@@ -688,12 +688,17 @@ def test_incompatible_figures(name, data_dir):
     source = stickmorph.load_figure(folder / f"{name}.source.json")
     target = stickmorph.load_figure(folder / f"{name}.target.json")
     arguments = (source["vertices"], target["vertices"], source["edges"])
+    report = stickmorph.check_compatibility(*arguments, target_edges=target["edges"])
     for method in ("barycentric", "linear"):
         with pytest.raises(stickmorph.IncompatibleFiguresError) as error:
             stickmorph.morph(*arguments, target_edges=target["edges"], method=method)
-        assert str(error.value)
-    with pytest.raises(stickmorph.IncompatibleFiguresError):
+        # The report travels with the exception: no message parsing needed.
+        assert str(error.value) == f"incompatible figures: {report.reason}"
+        assert error.value.kind == report.kind != "none"
+        assert error.value.vertices == report.vertices
+    with pytest.raises(stickmorph.IncompatibleFiguresError) as error:
         stickmorph.triangulate_figures(*arguments, target_edges=target["edges"])
+    assert (error.value.kind, error.value.vertices) == (report.kind, report.vertices)
 
 
 def test_incompatible_is_not_invalid():
@@ -715,10 +720,12 @@ def test_invalid_source_or_target(function):
         call(CROSSING, valid, CROSSING_EDGES)
     assert str(error.value).startswith("source: ")
     assert error.value.defect == "crossing_edges" and error.value.edges == [0, 1]
+    assert error.value.role == "source"
     with pytest.raises(stickmorph.InvalidFigureError) as error:
         call(valid, CROSSING, CROSSING_EDGES)
     assert str(error.value).startswith("target: ")
     assert error.value.defect == "crossing_edges"
+    assert error.value.role == "target"
     # Both bad: the source is named.
     with pytest.raises(stickmorph.InvalidFigureError, match="^source: "):
         call(CROSSING, CROSSING, CROSSING_EDGES)
@@ -726,6 +733,19 @@ def test_invalid_source_or_target(function):
     with pytest.raises(stickmorph.InvalidFigureError, match="^target: ") as error:
         call(valid, valid, [[0, 1], [1, 2], [2, 3]], target_edges=[[0, 1], [1, 2], [2, 2]])
     assert error.value.defect == "self_loop"
+
+
+def test_error_attributes_are_none_on_the_classes():
+    for attribute in ("defect", "vertices", "edges", "role"):
+        assert getattr(stickmorph.InvalidFigureError, attribute) is None
+    for attribute in ("kind", "vertices"):
+        assert getattr(stickmorph.IncompatibleFiguresError, attribute) is None
+
+
+def test_a_figure_on_its_own_has_no_role():
+    with pytest.raises(stickmorph.InvalidFigureError) as error:
+        stickmorph.validate(CROSSING, CROSSING_EDGES)
+    assert error.value.role is None
 
 
 def test_invalid_source_with_linear_method():
