@@ -1,9 +1,14 @@
 // The `stickmorph` command-line tool (../../shared/FORMAT.md, docs/CLI.md).
 //
-// A thin shell over the engine: it parses arguments, runs one command from
-// the command table and turns every failure into one line on stderr with
-// exit code 2. Adding a command means writing its run function and one
-// table entry; argument checking, --help and error reporting come for free.
+// A thin shell over the engine: it parses arguments (CLI11, one CLI::App per
+// command built from the command table), runs one command and turns every
+// failure into one line on stderr with exit code 2, CLI11's own errors
+// included. Adding a command means writing its run function and one table
+// entry; argument checking, --help and error reporting come for free. The
+// help texts are this file's, not CLI11's, so that they stay as documented.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <exception>
@@ -77,7 +82,7 @@ std::string usage_line(const CommandSpec& command) {
                              std::string(command.name) + " --help')");
 }
 
-std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
+std::string single_quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
 
 bool is_help_flag(std::string_view argument) { return argument == "--help" || argument == "-h"; }
 
@@ -128,7 +133,7 @@ std::optional<long long> integer_option(const ParsedArguments& arguments, std::s
   const char* end = text->data() + text->size();
   const auto [ptr, error] = std::from_chars(text->data(), end, value);
   if (error != std::errc() || ptr != end)
-    throw InvalidArgumentError("option " + std::string(name) + " needs a whole number, got " + quoted(*text));
+    throw InvalidArgumentError("option " + std::string(name) + " needs a whole number, got " + single_quoted(*text));
   return value;
 }
 
@@ -150,7 +155,7 @@ const std::string* check_outputs(const ParsedArguments& arguments, std::string_v
   if (svg == nullptr) return nullptr;
   cli::check_output_path("--svg", *svg);
   if (*svg == output)
-    throw InvalidArgumentError(std::string(command) + ": --svg and --output name the same file " + quoted(output));
+    throw InvalidArgumentError(std::string(command) + ": --svg and --output name the same file " + single_quoted(output));
   return svg;
 }
 
@@ -409,69 +414,114 @@ std::string command_help(const CommandSpec& command) {
   return text;
 }
 
-const OptionSpec* find_option(const CommandSpec& command, std::string_view name) {
-  for (const OptionSpec& option : command.options) {
-    if (option.name == name || (!option.short_name.empty() && option.short_name == name)) {
-      return &option;
-    }
-  }
-  return nullptr;
-}
-
-// Splits a command's arguments into positionals and options. Accepts
-// "--name value", "--name=value", "-o value"; "--" ends the options so that a
-// file named "-x.json" can still be passed. Returns false if help was asked.
-bool parse_arguments(const CommandSpec& command, const std::vector<std::string>& arguments,
-                     ParsedArguments& parsed) {
-  bool options_ended = false;
-  for (std::size_t k = 0; k < arguments.size(); ++k) {
+// The argument before "--", if any, that names `option` (as "--name" or
+// "--name=value"); `with_value` selects the "=value" form.
+std::optional<std::size_t> find_argument(const std::vector<std::string>& arguments, const OptionSpec& option,
+                                         bool with_value) {
+  for (std::size_t k = 0; k < arguments.size() && arguments[k] != "--"; ++k) {
     const std::string& argument = arguments[k];
-    const bool looks_like_option = argument.size() > 1 && argument[0] == '-';
-    if (options_ended || !looks_like_option) {
-      parsed.positional.push_back(argument);
-      continue;
-    }
-    if (argument == "--") {
-      options_ended = true;
-      continue;
-    }
-    if (is_help_flag(argument)) return false;
     const std::size_t equals = argument.find('=');
     const std::string name = argument.substr(0, equals);
-    const OptionSpec* option = find_option(command, name);
-    if (option == nullptr) fail_usage(command, "unknown option " + quoted(name));
-    const std::string long_name(option->name);
-    if (parsed.options.count(long_name) != 0) {
-      fail_usage(command, "option " + quoted(long_name) + " given twice");
-    }
-    if (option->value_name.empty()) {
-      if (equals != std::string::npos) {
-        fail_usage(command, "option " + quoted(long_name) + " takes no value");
-      }
-      parsed.options[long_name] = "";
-    } else if (equals != std::string::npos) {
-      parsed.options[long_name] = argument.substr(equals + 1);
+    if (name != option.name && (option.short_name.empty() || name != option.short_name)) continue;
+    if ((equals != std::string::npos) == with_value) return k;
+  }
+  return std::nullopt;
+}
+
+// CLI11 reports a value given to a flag and an option without its value
+// both as ArgumentMismatch, in its own words; FORMAT.md's one-line errors
+// name the option the way this CLI always has, so tell the two apart from
+// the arguments themselves (not from CLI11's text, which changes between
+// versions).
+[[noreturn]] void fail_mismatch(const CommandSpec& command, const std::vector<std::string>& arguments,
+                                const CLI::ParseError& error) {
+  for (const OptionSpec& option : command.options)
+    if (option.value_name.empty() && find_argument(arguments, option, true))
+      fail_usage(command, "option " + single_quoted(option.name) + " takes no value");
+  for (const OptionSpec& option : command.options) {
+    if (option.value_name.empty()) continue;
+    const auto bare = find_argument(arguments, option, false);
+    const auto joined = find_argument(arguments, option, true);
+    const bool at_end = bare && (*bare + 1 == arguments.size() || arguments[*bare + 1] == "--");
+    const bool empty_join = joined && arguments[*joined].back() == '=';
+    if (at_end || empty_join)
+      fail_usage(command, "option " + single_quoted(option.name) + " needs a value " + std::string(option.value_name));
+  }
+  fail_usage(command, error.what());
+}
+
+// Parses a command's arguments with CLI11 into positionals and options.
+// Accepts "--name value", "--name=value", "-o value"; "--" ends the options
+// so that a file named "-x.json" can still be passed. Returns false if help
+// was asked (-h or --help anywhere). Every mistake becomes one
+// InvalidArgumentError naming the command (fail_usage), never CLI11's
+// multi-line report.
+bool parse_arguments(const CommandSpec& command, const std::vector<std::string>& arguments,
+                     ParsedArguments& parsed) {
+  CLI::App app{std::string(command.summary), "stickmorph " + std::string(command.name)};
+  app.set_help_flag("-h,--help");
+  // Every value is kept as text: the command converts and checks it (the
+  // engine's limits, its own wording), and a repeated option is refused
+  // below rather than by CLI11's policy so that the message names it.
+  std::vector<std::vector<std::string>> values(command.options.size());
+  std::vector<CLI::Option*> handles;
+  for (std::size_t k = 0; k < command.options.size(); ++k) {
+    const OptionSpec& option = command.options[k];
+    std::string names(option.name);
+    if (!option.short_name.empty()) names = std::string(option.short_name) + "," + names;
+    if (option.value_name.empty()) {
+      handles.push_back(app.add_flag(names)->description(std::string(option.help))->disable_flag_override());
     } else {
-      if (k + 1 >= arguments.size()) {
-        fail_usage(command, "option " + quoted(long_name) + " needs a value " +
-                                std::string(option->value_name));
-      }
-      parsed.options[long_name] = arguments[++k];
+      handles.push_back(app.add_option(names, values[k], std::string(option.help))
+                            ->type_name(std::string(option.value_name))
+                            ->expected(1)
+                            ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll));
     }
   }
-  const std::size_t expected = command.positional_names.size();
-  for (std::size_t k = 0; k < parsed.positional.size() && k < expected; ++k) {
+  std::vector<std::string> files(command.positional_names.size());
+  for (std::size_t k = 0; k < files.size(); ++k)
+    app.add_option(std::string(command.positional_names[k]), files[k])->required();
+
+  const auto options_end = std::find(arguments.begin(), arguments.end(), std::string("--"));
+  std::vector<std::string> reversed(arguments.rbegin(), arguments.rend());  // CLI11 pops from the back
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    return false;
+  } catch (const CLI::ArgumentMismatch& error) {
+    fail_mismatch(command, arguments, error);
+  } catch (const CLI::RequiredError&) {
+    for (std::size_t k = 0; k < files.size(); ++k)
+      if (app.get_option(std::string(command.positional_names[k]))->count() == 0)
+        fail_usage(command, "missing argument " + std::string(command.positional_names[k]));
+    fail_usage(command, "missing argument");
+  } catch (const CLI::ExtrasError&) {
+    // The first argument CLI11 could not place, in command-line order.
+    const std::string first = app.remaining().front();
+    if (first.size() > 1 && first[0] == '-' && std::find(arguments.begin(), options_end, first) != options_end)
+      fail_usage(command, "unknown option " + single_quoted(first.substr(0, first.find('='))));
+    fail_usage(command, "unexpected extra argument " + single_quoted(first));
+  } catch (const CLI::ParseError& error) {
+    fail_usage(command, error.what());
+  }
+  for (std::size_t k = 0; k < command.options.size(); ++k) {
+    const OptionSpec& option = command.options[k];
+    if (handles[k]->count() > 1) fail_usage(command, "option " + single_quoted(option.name) + " given twice");
+    if (handles[k]->count() == 1)
+      parsed.options[std::string(option.name)] = option.value_name.empty() ? std::string() : values[k].front();
+  }
+  // CLI11 reads "-1" as a number and places it as a file; docs/CLI.md
+  // promises that before "--" every argument starting with '-' (but "-")
+  // is an option.
+  for (const std::string& file : files)
+    if (file.size() > 1 && file[0] == '-' && std::find(arguments.begin(), options_end, file) != options_end)
+      fail_usage(command, "unknown option " + single_quoted(file.substr(0, file.find('='))));
+  for (std::size_t k = 0; k < files.size(); ++k) {
     // "" would otherwise surface as ": cannot read file", naming nothing.
-    if (parsed.positional[k].empty())
+    if (files[k].empty())
       fail_usage(command, "empty file name given for " + std::string(command.positional_names[k]));
   }
-  if (parsed.positional.size() < expected) {
-    fail_usage(command, "missing argument " +
-                            std::string(command.positional_names[parsed.positional.size()]));
-  }
-  if (parsed.positional.size() > expected) {
-    fail_usage(command, "unexpected extra argument " + quoted(parsed.positional[expected]));
-  }
+  parsed.positional = std::move(files);
   return true;
 }
 
@@ -484,7 +534,7 @@ int run(const std::vector<std::string>& arguments) {
   const std::vector<std::string> rest(arguments.begin() + 1, arguments.end());
   if (is_help_flag(first) || first == "--version") {
     if (!rest.empty()) {
-      throw InvalidArgumentError(first + " takes no arguments, got " + quoted(rest[0]));
+      throw InvalidArgumentError(first + " takes no arguments, got " + single_quoted(rest[0]));
     }
     write_stdout(first == "--version" ? std::string("stickmorph ") + kVersion + "\n"
                                       : global_help());
@@ -501,7 +551,7 @@ int run(const std::vector<std::string>& arguments) {
   }
   const bool looks_like_option = first.size() > 1 && first[0] == '-';
   const std::string what = looks_like_option ? "unknown option " : "unknown command ";
-  throw InvalidArgumentError(what + quoted(first) + "; commands: " + command_names() +
+  throw InvalidArgumentError(what + single_quoted(first) + "; commands: " + command_names() +
                              " (see 'stickmorph --help')");
 }
 
