@@ -47,7 +47,7 @@ struct OptionSpec {
   std::string_view name;        ///< long form, "--frames"
   std::string_view short_name;  ///< "-o", or empty
   std::string_view value_name;  ///< "N" if the option takes a value, empty for a flag
-  std::string_view help;
+  std::string help;             ///< built at start-up where it quotes the engine's limits
 };
 
 /// A command's arguments after parsing: positionals in order, options by
@@ -315,6 +315,21 @@ int run_morph(const ParsedArguments& arguments) {
   return kExitSuccess;
 }
 
+// Help lines that quote limits read them from argument_limits.h, so that the
+// help cannot drift from what the engine enforces.
+std::string range_help(int fallback, int least, int most) {
+  return "(default " + std::to_string(fallback) + ", " + std::to_string(least) + " to " + std::to_string(most) + ")";
+}
+
+std::string frames_help() {
+  return "number of frames, at t = k/(N-1) " + range_help(kDefaultMorphFrames, kMinMorphFrames, kMaxMorphFrames);
+}
+
+std::string enclosure_sides_help() {
+  return "sides of the common convex enclosure " +
+         range_help(kDefaultEnclosureSides, kMinEnclosureSides, kMaxEnclosureSides);
+}
+
 const std::vector<CommandSpec>& commands() {
   static const std::vector<CommandSpec> table = {
       {"check",
@@ -330,7 +345,7 @@ const std::vector<CommandSpec>& commands() {
        {"SOURCE.json", "TARGET.json"},
        {{"--output", "-o", "OUT.json", "where to write the triangulation object (required)"},
         {"--steiner", "", "NAME", "compatible triangulation method: improved (default), sg2001 or aronov"},
-        {"--enclosure-sides", "", "K", "sides of the common convex enclosure (default 6, 3 to 1000)"},
+        {"--enclosure-sides", "", "K", enclosure_sides_help()},
         {"--svg", "", "FILE", "also draw both triangulations side by side"}},
        "compatibly triangulate two stick figures inside a common enclosure",
        "Builds the compatible triangulation of the two figures that the morph uses\n"
@@ -343,10 +358,10 @@ const std::vector<CommandSpec>& commands() {
       {"morph",
        {"SOURCE.json", "TARGET.json"},
        {{"--output", "-o", "OUT.json", "where to write the morph (required)"},
-        {"--frames", "", "N", "number of frames, at t = k/(N-1) (default 50, 2 to 100000)"},
+        {"--frames", "", "N", frames_help()},
         {"--steiner", "", "NAME", "compatible triangulation method: improved (default), sg2001 or aronov"},
         {"--weights", "", "KIND", "barycentric weights: mvc (default), uniform or floater"},
-        {"--enclosure-sides", "", "K", "sides of the common convex enclosure (default 6, 3 to 1000)"},
+        {"--enclosure-sides", "", "K", enclosure_sides_help()},
         {"--method", "", "NAME", "barycentric (default) or linear (straight-line baseline, Fig. 8d)"},
         {"--no-verify", "", "", "skip the exact check of every frame"},
         {"--svg", "", "FILE", "also draw a filmstrip of about seven frames"},
