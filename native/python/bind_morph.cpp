@@ -7,6 +7,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -86,16 +87,13 @@ py::dict morph_dict(const sm::MorphStickFiguresResult& result, sm::MorphMethod m
 // texts outside the engine (the add-on's properties, its preferences).
 py::dict limits_dict() {
   py::dict limits;
-  limits["min_frames"] = sm::kMinMorphFrames;
-  limits["max_frames"] = sm::kMaxMorphFrames;
-  limits["default_frames"] = sm::kDefaultMorphFrames;
-  limits["min_enclosure_sides"] = sm::kMinEnclosureSides;
-  limits["max_enclosure_sides"] = sm::kMaxEnclosureSides;
-  limits["default_enclosure_sides"] = sm::kDefaultEnclosureSides;
-  limits["min_smoothing_rounds"] = sm::kMinSmoothingRounds;
-  limits["max_smoothing_rounds"] = sm::kMaxSmoothingRounds;
-  limits["default_smoothing_rounds"] = sm::kDefaultSmoothingRounds;
-  limits["max_coordinate_magnitude"] = sm::kMaxCoordinateMagnitude;
+  for (const auto& [name, value] : engine_limits()) {
+    // Counts as ints; the coordinate bound (1e100) is a float.
+    if (value == std::floor(value) && std::abs(value) < 1e15)
+      limits[name.c_str()] = static_cast<long long>(value);
+    else
+      limits[name.c_str()] = value;
+  }
   return limits;
 }
 
@@ -135,7 +133,7 @@ void bind_morph(py::module_& m) {
       py::arg("source_xy"), py::arg("target_xy"), py::arg("edges"), py::arg("frames") = sm::kDefaultMorphFrames,
       py::arg("steiner") = py::none(), py::arg("weights") = py::none(), py::arg("enclosure_sides") = py::none(),
       py::arg("method") = "barycentric", py::arg("verify") = py::none(), py::arg("target_edges") = py::none(),
-      R"doc(Morphs one stick figure into a compatible one (paper, Algorithm 3).
+      with_limits(R"doc(Morphs one stick figure into a compatible one (paper, Algorithm 3).
 
 The barycentric method (default) compatibly triangulates both figures inside
 a common convex enclosure (triangulate_figures) and morphs the triangulation
@@ -154,14 +152,15 @@ Args:
     source corresponds to vertex i of the target.
   edges: #E by 2 integer array-like of vertex indices of the source (and of
     the target unless target_edges is given).
-  frames: N, the number of frames, limits["min_frames"] to
-    limits["max_frames"] (2 to 100000); frame k is at time k/(N-1).
+  frames: N, the number of frames, {min_frames} to {max_frames} (stickmorph.limits);
+    frame k is at time k/(N-1).
   steiner: "improved" (default), "sg2001" or "aronov", as for
     triangulate_figures. Barycentric only.
   weights: "mvc" (mean value coordinates, default), "uniform" or "floater".
     Barycentric only.
-  enclosure_sides: sides of the common regular enclosure, 3 to 1000
-    (default 6). Barycentric only.
+  enclosure_sides: sides of the common regular enclosure,
+    {min_enclosure_sides} to {max_enclosure_sides} (default {default_enclosure_sides}).
+    Barycentric only.
   method: "barycentric" (default) or "linear".
   verify: check every frame exactly (default True). Barycentric only.
 
@@ -201,7 +200,7 @@ Raises:
     method, weights or steiner name, enclosure_sides out of range, an option
     method="linear" would ignore, or an array of the wrong shape or type.
   VerificationError: a triangulation or a frame failed exact verification
-    and could not be repaired.)doc");
+    and could not be repaired.)doc"));
 }
 
 }  // namespace stickmorph::python

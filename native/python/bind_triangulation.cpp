@@ -65,7 +65,7 @@ void bind_triangulation(py::module_& m) {
       },
       py::arg("source"), py::arg("target"), py::arg("steiner") = "improved",
       py::arg("corners") = py::none(), py::arg("smoothing_rounds") = sm::kDefaultSmoothingRounds,
-      R"doc(Compatibly triangulates two corresponding polygons (paper, section 4).
+      with_limits(R"doc(Compatibly triangulates two corresponding polygons (paper, section 4).
 
 Both polygons share one corner sequence; corner k sits at source[corners[k]]
 in the source and at target[corners[k]] in the target. The result is one
@@ -85,7 +85,7 @@ Args:
     simple polygons, e.g. a face with a dangling edge walked on both sides).
     Default: 0, 1, ..., #V-1, a simple polygon through every vertex in order.
   smoothing_rounds: rounds of Laplacian smoothing of the Steiner vertices in
-    each polygon (0 to 1000); a move is kept only if the triangulation stays valid
+    each polygon ({min_smoothing_rounds} to {max_smoothing_rounds}); a move is kept only if the triangulation stays valid
     and its smallest angle does not shrink.
 
 Returns:
@@ -110,7 +110,7 @@ Raises:
     or type, source and target of different lengths, a corner index out of
     range, or a negative smoothing_rounds.
   VerificationError: no compatible triangulation passing verification was
-    found; the message names the face and the triangle.)doc");
+    found; the message names the face and the triangle.)doc"));
 
   m.def(
       "triangulate_figures",
@@ -131,7 +131,7 @@ Raises:
       },
       py::arg("source"), py::arg("target"), py::arg("edges"), py::arg("target_edges") = py::none(),
       py::arg("steiner") = "improved", py::arg("enclosure_sides") = sm::kDefaultEnclosureSides,
-      R"doc(Compatibly triangulates two compatible stick figures (paper, Algorithm 3, steps 1-3).
+      with_limits(R"doc(Compatibly triangulates two compatible stick figures (paper, Algorithm 3, steps 1-3).
 
 Both figures are enclosed in the same regular polygon; every interior face
 pair and the annulus between figure and enclosure are compatibly
@@ -150,7 +150,8 @@ Args:
     order and direction may differ from edges.
   steiner: Steiner vertex placement in the faces, "improved" (default),
     "sg2001" or "aronov" (see compatible_triangulation).
-  enclosure_sides: sides k of the common regular enclosure, 3 to 1000.
+  enclosure_sides: sides k of the common regular enclosure,
+    {min_enclosure_sides} to {max_enclosure_sides}.
 
 Returns:
   dict (FORMAT.md's triangulation object) with
@@ -176,7 +177,7 @@ Raises:
   IncompatibleFiguresError: the figures are not compatible.
   InvalidArgumentError: an unknown steiner name, enclosure_sides below 3, or
     an array of the wrong shape or type.
-  VerificationError: no triangulation passing exact verification was found.)doc");
+  VerificationError: no triangulation passing exact verification was found.)doc"));
 
 }
 

@@ -2,8 +2,10 @@
 #include "conversions.h"
 
 #include <cmath>
+#include <deque>
 #include <limits>
 
+#include "stickmorph/argument_limits.h"
 #include "stickmorph/errors.h"
 #include "stickmorph/json.h"
 
@@ -315,6 +317,37 @@ py::dict triangulation_dict(const sm::FigureTriangulation& triangulation,
   result["triangles"] = triangles;
   result["stats"] = statistics;
   return result;
+}
+
+std::vector<std::pair<std::string, double>> engine_limits() {
+  return {{"min_frames", sm::kMinMorphFrames},
+          {"max_frames", sm::kMaxMorphFrames},
+          {"default_frames", sm::kDefaultMorphFrames},
+          {"min_enclosure_sides", sm::kMinEnclosureSides},
+          {"max_enclosure_sides", sm::kMaxEnclosureSides},
+          {"default_enclosure_sides", sm::kDefaultEnclosureSides},
+          {"min_smoothing_rounds", sm::kMinSmoothingRounds},
+          {"max_smoothing_rounds", sm::kMaxSmoothingRounds},
+          {"default_smoothing_rounds", sm::kDefaultSmoothingRounds},
+          {"max_coordinate_magnitude", sm::kMaxCoordinateMagnitude}};
+}
+
+const char* with_limits(const char* doc) {
+  // A deque: growing it never moves the strings already handed out.
+  static std::deque<std::string> texts;
+  std::string text = doc;
+  for (const auto& [name, value] : engine_limits()) {
+    const std::string key = "{" + name + "}";
+    const bool whole = value == std::floor(value) && std::abs(value) < 1e15;
+    const std::string shown = whole ? std::to_string(static_cast<long long>(value)) : sm::format_double(value);
+    for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + shown.size()))
+      text.replace(at, key.size(), shown);
+  }
+  if (text.find("{min_") != std::string::npos || text.find("{max_") != std::string::npos ||
+      text.find("{default_") != std::string::npos)
+    throw sm::InternalError("stickmorph module: a docstring names an unknown limit: " + text.substr(0, 60));
+  texts.push_back(std::move(text));
+  return texts.back().c_str();
 }
 
 py::array_t<double> frames_array(const std::vector<std::vector<sm::Vec2>>& frames, std::size_t n) {

@@ -83,6 +83,15 @@ bool to_flag(const py::object& object, const std::string& name);
 py::dict triangulation_dict(const sm::FigureTriangulation& triangulation,
                             const sm::FigureTriangulationStats& stats);
 
+/// `doc` with {min_frames}, {max_frames}, {default_frames},
+/// {min_enclosure_sides}, ... (the keys of stickmorph.limits) replaced by the
+/// engine's values, so that docstrings quote the limits it enforces. The
+/// text lives as long as the process, as pybind11 needs for docstrings.
+const char* with_limits(const char* doc);
+
+/// The engine's limits by name: stickmorph.limits and with_limits.
+std::vector<std::pair<std::string, double>> engine_limits();
+
 /// Frames of n positions each as one (N, n, 2) float64 array.
 py::array_t<double> frames_array(const std::vector<std::vector<sm::Vec2>>& frames, std::size_t n);
 

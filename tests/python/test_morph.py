@@ -662,6 +662,15 @@ def test_limits_and_option_names_are_exported():
     assert stickmorph.OPTION_NAMES["verify"] == "--no-verify"
     assert stickmorph.OPTION_NAMES["smoothing_rounds"] == ""
     assert stickmorph.METHOD_NAMES == ("barycentric", "linear")
+    # The docstrings quote them from the same table.
+    limits = stickmorph.limits
+    assert f"{limits['min_frames']} to {limits['max_frames']}" in stickmorph.morph.__doc__
+    for function in (stickmorph.morph, stickmorph.triangulate_figures):
+        assert f"{limits['min_enclosure_sides']} to {limits['max_enclosure_sides']}" in function.__doc__
+    assert f"({limits['min_smoothing_rounds']} to {limits['max_smoothing_rounds']})" in \
+        stickmorph.compatible_triangulation.__doc__
+    for function in (stickmorph.morph, stickmorph.triangulate_figures, stickmorph.compatible_triangulation):
+        assert "{min_" not in function.__doc__ and "{max_" not in function.__doc__
     # The limits are the ones enforced.
     top = stickmorph.limits["max_enclosure_sides"]
     with pytest.raises(stickmorph.InvalidArgumentError, match=f"at most {top}"):
