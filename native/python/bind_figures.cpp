@@ -226,7 +226,8 @@ Returns:
 
 Raises:
   InvalidFigureError: the source or the target is invalid (the message
-    starts with "source: " or "target: ").
+    starts with "source: " or "target: ", and its role attribute says
+    which).
   InvalidArgumentError: an array of the wrong shape or type.)doc");
 
 }

@@ -194,8 +194,10 @@ Returns:
 
 Raises:
   InvalidFigureError: the source or the target is invalid (the message
-    starts with "source: " or "target: ").
-  IncompatibleFiguresError: the figures are not compatible.
+    starts with "source: " or "target: ", and its role attribute says
+    which).
+  IncompatibleFiguresError: the figures are not compatible; its kind and
+    vertices attributes are those of check_compatibility's report.
   InvalidArgumentError: frames out of range or not an integer, an unknown
     method, weights or steiner name, enclosure_sides out of range, an option
     method="linear" would ignore, or an array of the wrong shape or type.

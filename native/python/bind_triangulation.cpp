@@ -173,8 +173,10 @@ Returns:
 
 Raises:
   InvalidFigureError: the source or the target is invalid (the message
-    starts with "source: " or "target: ").
-  IncompatibleFiguresError: the figures are not compatible.
+    starts with "source: " or "target: ", and its role attribute says
+    which).
+  IncompatibleFiguresError: the figures are not compatible; its kind and
+    vertices attributes are those of check_compatibility's report.
   InvalidArgumentError: an unknown steiner name, enclosure_sides below 3, or
     an array of the wrong shape or type.
   VerificationError: no triangulation passing exact verification was found.)doc"));
