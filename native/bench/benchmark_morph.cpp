@@ -24,6 +24,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <Eigen/SparseLU>
 #include <cerrno>
 #include <charconv>
@@ -33,6 +34,7 @@
 #include <cstring>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <iostream>
 #include <map>
 #include <new>
@@ -41,12 +43,14 @@
 #include <vector>
 
 #include "bench_figures.h"
+#include "stickmorph/argument_limits.h"
 #include "stickmorph/compatibility.h"
 #include "stickmorph/decomposition.h"
 #include "stickmorph/figure_triangulation.h"
 #include "stickmorph/frame_verification.h"
 #include "stickmorph/json.h"
 #include "stickmorph/morph.h"
+#include "stickmorph/morph_stick_figures.h"
 
 namespace stickmorph::bench {
 namespace {
@@ -87,59 +91,28 @@ struct Options {
   bool help = false;
 };
 
-int parse_int(const std::string& name, const std::string& text, int least) {
-  int value = 0;
-  const char* end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, value);
-  if (text.empty() || error != std::errc() || stop != end || value < least)
-    throw InvalidArgumentError(name + " needs an integer of at least " + std::to_string(least) + ", got '" +
-                               text + "'");
-  return value;
-}
-
-std::vector<std::string> split(const std::string& text) {
-  std::vector<std::string> items;
-  std::stringstream list(text);
-  for (std::string item; std::getline(list, item, ',');) items.push_back(item);
-  return items;
-}
-
+// CLI11 parses and range-checks; the help is kUsage, and a mistake is one
+// InvalidArgumentError line like every other failure of this program.
 Options parse_arguments(int argc, char** argv) {
   Options options;
-  for (int i = 1; i < argc; ++i) {
-    const std::string name = argv[i];
-    if (name == "--help" || name == "-h") {
-      options.help = true;
-      continue;
-    }
-    if (i + 1 >= argc) throw InvalidArgumentError("unknown argument or missing value: '" + name + "' (see --help)");
-    const std::string value = argv[++i];
-    if (name == "--sizes") {
-      options.sizes.clear();
-      for (const std::string& item : split(value)) options.sizes.push_back(parse_int("--sizes", item, 3));
-      if (options.sizes.empty()) throw InvalidArgumentError("--sizes needs at least one size");
-    } else if (name == "--families") {
-      options.families = split(value);
-      for (const std::string& family : options.families)
-        if (std::find(family_names().begin(), family_names().end(), family) == family_names().end())
-          throw InvalidArgumentError("--families: unknown family '" + family + "'");
-    } else if (name == "--frames") {
-      options.frames = parse_int(name, value, 2);
-    } else if (name == "--json") {
-      options.json_path = value;
-    } else if (name == "--aronov-max") {
-      options.aronov_max = parse_int(name, value, 0);
-    } else if (name == "--sg2001-max") {
-      options.sg2001_max = parse_int(name, value, 0);
-    } else if (name == "--time-limit") {
-      options.time_limit_s = parse_int(name, value, 1);
-    } else if (name == "--spiderweb-time-limit") {
-      options.spiderweb_time_limit_s = parse_int(name, value, 1);
-    } else if (name == "--memory-limit-mib") {
-      options.memory_limit_mib = parse_int(name, value, 64);
-    } else {
-      throw InvalidArgumentError("unknown option '" + name + "' (see --help)");
-    }
+  CLI::App app{"morph benchmark", "stickmorph_benchmark_morph"};
+  app.set_help_flag("-h,--help");
+  constexpr int kMost = std::numeric_limits<int>::max();
+  app.add_option("--sizes", options.sizes)->delimiter(',')->check(CLI::Range(3, kMost));
+  app.add_option("--families", options.families)->delimiter(',')->check(CLI::IsMember(family_names()));
+  app.add_option("--frames", options.frames)->check(CLI::Range(kMinMorphFrames, kMaxMorphFrames));
+  app.add_option("--json", options.json_path);
+  app.add_option("--aronov-max", options.aronov_max)->check(CLI::Range(0, kMost));
+  app.add_option("--sg2001-max", options.sg2001_max)->check(CLI::Range(0, kMost));
+  app.add_option("--time-limit", options.time_limit_s)->check(CLI::Range(1, kMost));
+  app.add_option("--spiderweb-time-limit", options.spiderweb_time_limit_s)->check(CLI::Range(1, kMost));
+  app.add_option("--memory-limit-mib", options.memory_limit_mib)->check(CLI::Range(64L, long(kMost)));
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    options.help = true;
+  } catch (const CLI::ParseError& error) {
+    throw InvalidArgumentError(std::string(error.what()) + " (see --help)");
   }
   return options;
 }
@@ -268,16 +241,13 @@ std::string run_improved(const std::string& family, int requested, int frames) {
   record.set("n", n).set("edges", int(source.edges.size())).set("twist", figures.twist);
   record.set("generate_ms", figures.generate_ms).set("validate_ms", figures.validate_ms);
 
-  FigureTriangulationStats stats;
-  auto start = Clock::now();
-  const FigureTriangulation tri = triangulate_figures(source, figures.target, {}, &stats);
-  add_triangulation_stats(record, ms_since(start), stats, tri);
-
-  MorphOptions options;
+  // The engine's one entry, as the CLI and the module run it.
+  MorphStickFiguresOptions options;
   options.frames = frames;
-  start = Clock::now();
-  const MorphResult morph = morph_triangulation(tri, source, options);
-  record.set("morph_ms", ms_since(start))
+  const MorphStickFiguresResult morph = morph_stick_figures(source, figures.target, options);
+  const FigureTriangulation& tri = *morph.triangulation;
+  add_triangulation_stats(record, morph.stats.triangulate_ms, morph.stats.triangulation, tri);
+  record.set("morph_ms", morph.stats.morph_ms)
       .set("frames", frames)
       .set("morph_setup_ms", morph.stats.factorize_ms)
       .set("solve_ms", morph.stats.solve_ms)
@@ -290,14 +260,14 @@ std::string run_improved(const std::string& family, int requested, int frames) {
   // the morph's own bookkeeping.
   const Decomposition decomposition = decompose(source);
   int invalid = 0;
-  for (const std::vector<Vec2>& frame : morph.frames) {
-    const std::vector<Vec2> figure(frame.begin(), frame.begin() + n);
-    if (!is_frame_valid(source, decomposition, figure)) ++invalid;
-  }
+  for (const std::vector<Vec2>& frame : morph.frames)
+    if (!is_frame_valid(source, decomposition, frame)) ++invalid;
   record.set("invalid_frames", invalid);
 
-  std::vector<int> linear_invalid;
-  linear_morph(source, figures.target, frames, &linear_invalid);
+  MorphStickFiguresOptions straight;
+  straight.method = MorphMethod::Linear;
+  straight.frames = frames;
+  const std::vector<int> linear_invalid = morph_stick_figures(source, figures.target, straight).stats.invalid_frames;
   record.set("linear_invalid_frames", int(linear_invalid.size()));
   record.set("linear_first_invalid", linear_invalid.empty() ? -1 : linear_invalid.front());
   record.set("fresh_lu_ms", fresh_lu_ms(tri));

@@ -16,6 +16,8 @@
 // Usage: stickmorph_benchmark [--methods aronov,sg2001,improved] [--repeat N]
 //                             [--json FILE] FILE_OR_DIR...
 // --json also writes every pair's results as JSON, for make_benchmarks.py.
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <charconv>
 #include <chrono>
@@ -115,16 +117,6 @@ bool ends_with(std::string_view text, std::string_view suffix) {
 // ---------------------------------------------------------------------------
 // Arguments
 
-int parse_repeat(const std::string& text) {
-  int value = 0;
-  const char* end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, value);
-  if (text.empty() || error != std::errc() || stop != end || value < 1) {
-    throw InvalidArgumentError("--repeat needs a positive integer, got '" + text + "'");
-  }
-  return value;
-}
-
 std::vector<SteinerMethod> parse_methods(const std::string& text) {
   std::vector<SteinerMethod> methods;
   std::size_t begin = 0;
@@ -148,48 +140,27 @@ std::vector<SteinerMethod> parse_methods(const std::string& text) {
   return methods;
 }
 
+// CLI11 parses; the help is kUsage, and a mistake is one InvalidArgumentError
+// line like every other failure of this program.
 Options parse_arguments(int argc, char** argv) {
   Options options;
   options.methods = {SteinerMethod::Aronov, SteinerMethod::Sg2001, SteinerMethod::Improved};
-  bool options_ended = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string argument = argv[i];
-    if (options_ended || argument.empty() || argument[0] != '-' || argument == "-") {
-      options.inputs.push_back(argument);
-      continue;
-    }
-    if (argument == "--") {
-      options_ended = true;
-      continue;
-    }
-    if (argument == "--help" || argument == "-h") {
-      options.help = true;
-      continue;
-    }
-    // Accept both "--name value" and "--name=value".
-    std::string name = argument;
-    std::string value;
-    bool has_value = false;
-    if (const std::size_t equals = argument.find('='); equals != std::string::npos) {
-      name = argument.substr(0, equals);
-      value = argument.substr(equals + 1);
-      has_value = true;
-    }
-    if (name != "--methods" && name != "--repeat" && name != "--json") {
-      throw InvalidArgumentError("unknown option '" + name + "' (see --help)");
-    }
-    if (!has_value) {
-      if (i + 1 >= argc) throw InvalidArgumentError(name + " needs a value");
-      value = argv[++i];
-    }
-    if (name == "--methods") {
-      options.methods = parse_methods(value);
-    } else if (name == "--json") {
-      options.json_path = value;
-    } else {
-      options.repeat = parse_repeat(value);
-    }
+  CLI::App app{"compatible triangulation benchmark", "stickmorph_benchmark"};
+  app.set_help_flag("-h,--help");
+  std::string methods;
+  app.add_option("--methods", methods);
+  app.add_option("--repeat", options.repeat)->check(CLI::Range(1, std::numeric_limits<int>::max()));
+  app.add_option("--json", options.json_path);
+  app.add_option("FILE_OR_DIR", options.inputs);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    options.help = true;
+    return options;
+  } catch (const CLI::ParseError& error) {
+    throw InvalidArgumentError(std::string(error.what()) + " (see --help)");
   }
+  if (app.count("--methods")) options.methods = parse_methods(methods);
   if (options.inputs.empty()) options.inputs.push_back(kDefaultDirectory);
   return options;
 }

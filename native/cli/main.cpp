@@ -1,16 +1,21 @@
 // The `stickmorph` command-line tool (../../shared/FORMAT.md, docs/CLI.md).
 //
-// A thin shell over the engine: it parses arguments, runs one command from
-// the command table and turns every failure into one line on stderr with
-// exit code 2. Adding a command means writing its run function and one
-// table entry; argument checking, --help and error reporting come for free.
+// A thin shell over the engine: it parses arguments (CLI11, one CLI::App per
+// command built from the command table), runs one command and turns every
+// failure into one line on stderr with exit code 2, CLI11's own errors
+// included. Adding a command means writing its run function and one table
+// entry; argument checking, --help and error reporting come for free. The
+// help texts are this file's, not CLI11's, so that they stay as documented.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
 #include <charconv>
-#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <iostream>
 #include <map>
 #include <new>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -23,6 +28,7 @@
 #include "stickmorph/json.h"
 #include "stickmorph/morph.h"
 #include "stickmorph/io/result_files.h"
+#include "stickmorph/morph_stick_figures.h"
 #include "stickmorph/svg_output.h"
 #include "result_json.h"
 
@@ -42,7 +48,7 @@ struct OptionSpec {
   std::string_view name;        ///< long form, "--frames"
   std::string_view short_name;  ///< "-o", or empty
   std::string_view value_name;  ///< "N" if the option takes a value, empty for a flag
-  std::string_view help;
+  std::string help;             ///< built at start-up where it quotes the engine's limits
 };
 
 /// A command's arguments after parsing: positionals in order, options by
@@ -77,7 +83,7 @@ std::string usage_line(const CommandSpec& command) {
                              std::string(command.name) + " --help')");
 }
 
-std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
+std::string single_quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
 
 bool is_help_flag(std::string_view argument) { return argument == "--help" || argument == "-h"; }
 
@@ -119,28 +125,24 @@ const std::string& required_option(const ParsedArguments& arguments, std::string
   return *value;
 }
 
-// A whole number option in [least, most], e.g. --frames.
-int integer_option(const ParsedArguments& arguments, std::string_view name, int fallback, int least, int most) {
+// A whole number option, e.g. --frames; its range is the engine's to check
+// (argument_limits.h), so that the CLI and the module refuse the same values.
+std::optional<long long> integer_option(const ParsedArguments& arguments, std::string_view name) {
   const std::string* text = option_value(arguments, name);
-  if (text == nullptr) return fallback;
-  int value = 0;
+  if (text == nullptr) return std::nullopt;
+  long long value = 0;
   const char* end = text->data() + text->size();
   const auto [ptr, error] = std::from_chars(text->data(), end, value);
   if (error != std::errc() || ptr != end)
-    throw InvalidArgumentError("option " + std::string(name) + " needs a whole number, got " + quoted(*text));
-  if (value < least)
-    throw InvalidArgumentError("option " + std::string(name) + " must be at least " + std::to_string(least) +
-                               ", got " + std::to_string(value));
-  if (value > most)
-    throw InvalidArgumentError("option " + std::string(name) + " must be at most " + std::to_string(most) +
-                               ", got " + std::to_string(value));
+    throw InvalidArgumentError("option " + std::string(name) + " needs a whole number, got " + single_quoted(*text));
   return value;
 }
 
 FigureTriangulationOptions triangulation_options(const ParsedArguments& arguments) {
   FigureTriangulationOptions options;
   if (const std::string* name = option_value(arguments, "--steiner")) options.method = parse_steiner_method(*name);
-  options.enclosure_sides = integer_option(arguments, "--enclosure-sides", 6, 3, kMaxEnclosureSides);
+  if (const auto sides = integer_option(arguments, "--enclosure-sides"))
+    options.enclosure_sides = check_enclosure_sides(*sides, OptionSpelling::CommandLine);
   return options;
 }
 
@@ -154,7 +156,7 @@ const std::string* check_outputs(const ParsedArguments& arguments, std::string_v
   if (svg == nullptr) return nullptr;
   cli::check_output_path("--svg", *svg);
   if (*svg == output)
-    throw InvalidArgumentError(std::string(command) + ": --svg and --output name the same file " + quoted(output));
+    throw InvalidArgumentError(std::string(command) + ": --svg and --output name the same file " + single_quoted(output));
   return svg;
 }
 
@@ -173,97 +175,98 @@ int run_triangulate(const ParsedArguments& arguments) {
   return kExitSuccess;
 }
 
-double milliseconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-// FORMAT.md's morph document. `triangulation` is null for the linear
-// baseline, which uses none.
-std::string morph_document(const StickFigure& source, const std::vector<double>& times,
-                           const std::vector<std::vector<Vec2>>& frames, const FigureTriangulation* triangulation,
-                           double triangulate_ms, double morph_ms, const std::string& method,
-                           const MorphOptions& options, const FigureTriangulationOptions& triangulation_options,
-                           const MorphStats* morph_stats, const std::vector<int>* invalid_frames) {
+// FORMAT.md's morph document, written by the IO library (result_files.h)
+// from what the engine entry reports. The linear baseline has no
+// triangulation and reports which frames self-intersect instead of the
+// solver's counters.
+std::string morph_document(const StickFigure& source, const MorphStickFiguresResult& result, MorphMethod method) {
+  const bool linear = method == MorphMethod::Linear;
+  const MorphStickFiguresStats& stats = result.stats;
+  MorphStats solver;
+  solver.factorize_ms = stats.factorize_ms;
+  solver.solve_ms = stats.solve_ms;
+  solver.verify_ms = stats.verify_ms;
+  solver.refined_frames = stats.refined_frames;
+  solver.factorizations = stats.factorizations;
   MorphProvenance how;
-  how.method = method;
-  how.triangulation = triangulation;
-  how.triangulation_options = triangulation_options;
-  how.options = options;
-  how.stats = morph_stats;
-  how.invalid_frames = invalid_frames;
-  how.triangulate_ms = triangulate_ms;
-  how.morph_ms = morph_ms;
-  return morph_file_json(source, times, frames, how);
+  how.method = morph_method_name(method);
+  how.triangulation = result.triangulation ? &*result.triangulation : nullptr;
+  how.triangulation_options = result.triangulation_options;
+  how.options = result.morph_options;
+  how.stats = linear ? nullptr : &solver;
+  how.invalid_frames = linear ? &stats.invalid_frames : nullptr;
+  how.triangulate_ms = stats.triangulate_ms;
+  how.morph_ms = stats.morph_ms;
+  return morph_file_json(source, result.times, result.frames, how);
 }
 
 int run_morph(const ParsedArguments& arguments) {
   const std::string& output = required_option(arguments, "morph", "--output");
   const std::string* svg = check_outputs(arguments, "morph", output);
-  MorphOptions options;
-  options.frames = integer_option(arguments, "--frames", 50, 2, kMaxMorphFrames);
-  if (const std::string* name = option_value(arguments, "--weights")) options.weights = parse_weight_kind(*name);
-  options.verify = option_value(arguments, "--no-verify") == nullptr;
-  const std::string method = option_value(arguments, "--method") ? *option_value(arguments, "--method") : "barycentric";
-  if (method != "barycentric" && method != "linear")
-    throw InvalidArgumentError("unknown morph method '" + method + "' (choose barycentric or linear)");
   const bool overlay = option_value(arguments, "--svg-triangulation") != nullptr;
   const bool compare_linear = option_value(arguments, "--svg-compare-linear") != nullptr;
-  // Options that would have no effect are refused rather than ignored, so
-  // that a user who asked for a drawing or a setting does not silently get
-  // something else.
+  MorphStickFiguresOptions options;
+  options.spelling = OptionSpelling::CommandLine;
+  // Checked at once (check_morph_options checks it again) so that a bad
+  // count is reported before the drawing options, as it always was.
+  if (const auto frames = integer_option(arguments, "--frames"))
+    options.frames = check_frames(*frames, OptionSpelling::CommandLine);
+  if (const std::string* name = option_value(arguments, "--weights")) options.weights = parse_weight_kind(*name);
+  if (const std::string* name = option_value(arguments, "--method")) options.method = parse_morph_method(*name);
+  // Drawing options that would have no effect are refused rather than
+  // ignored, like the engine's options that --method linear would ignore.
   for (const char* drawing : {"--svg-triangulation", "--svg-compare-linear"})
     if (option_value(arguments, drawing) && svg == nullptr)
       throw InvalidArgumentError("morph: option " + std::string(drawing) + " needs --svg FILE");
   if (overlay && compare_linear)
     throw InvalidArgumentError("morph: --svg-triangulation and --svg-compare-linear cannot be combined");
-  if (method == "linear") {
-    for (const char* unused : {"--svg-triangulation", "--svg-compare-linear", "--no-verify", "--weights",
-                               "--steiner", "--enclosure-sides"})
-      if (option_value(arguments, unused))
-        throw InvalidArgumentError("morph: option " + std::string(unused) +
+  if (options.method == MorphMethod::Linear)
+    for (const char* drawing : {"--svg-triangulation", "--svg-compare-linear"})
+      if (option_value(arguments, drawing))
+        throw InvalidArgumentError("morph: option " + std::string(drawing) +
                                    " has no effect with --method linear (the straight-line morph uses no "
                                    "triangulation)");
-  }
-  const FigureTriangulationOptions tri_options = triangulation_options(arguments);
+  if (option_value(arguments, "--no-verify")) options.verify = false;
+  if (const std::string* name = option_value(arguments, "--steiner")) options.steiner = parse_steiner_method(*name);
+  options.enclosure_sides = integer_option(arguments, "--enclosure-sides");
+  // The triangulation drawn under the filmstrip needs every node's position.
+  options.keep_node_frames = overlay;
+  check_morph_options(options);
   const StickFigure source = read_figure_file(arguments.positional[0]);
   const StickFigure target = read_figure_file(arguments.positional[1]);
   const std::string title = "stickmorph morph: " + (source.name.empty() ? arguments.positional[0] : source.name) +
                             " -> " + (target.name.empty() ? arguments.positional[1] : target.name);
 
-  if (method == "linear") {
-    // The paper's Figure 8d baseline: frames that self-intersect are
-    // reported, not refused.
-    require_compatible(source, target);
-    const auto start = std::chrono::steady_clock::now();
-    std::vector<int> invalid;
-    const MorphResult result = linear_morph(source, target, options.frames, &invalid);
-    const double ms = milliseconds_since(start);
-    std::vector<cli::OutputFile> files{{output, morph_document(source, result.times, result.frames, nullptr, 0, ms,
-                                                               method, options, tri_options, nullptr, &invalid)}};
-    if (svg) files.push_back({*svg, filmstrip_svg(source, result.frames, result.times, 7, nullptr, title)});
-    cli::write_files_atomically(files);
-    return kExitSuccess;
-  }
-  auto start = std::chrono::steady_clock::now();
-  const FigureTriangulation triangulation = triangulate_figures(source, target, tri_options);
-  const double triangulate_ms = milliseconds_since(start);
-  start = std::chrono::steady_clock::now();
-  const MorphResult result = morph_triangulation(triangulation, source, options);
-  const double morph_ms = milliseconds_since(start);
-  std::vector<cli::OutputFile> files{{output, morph_document(source, result.times, result.frames, &triangulation,
-                                                             triangulate_ms, morph_ms, method, options, tri_options,
-                                                             &result.stats, nullptr)}};
+  const MorphStickFiguresResult result = morph_stick_figures(source, target, options);
+  std::vector<cli::OutputFile> files{{output, morph_document(source, result, options.method)}};
   if (svg && compare_linear) {
-    std::vector<int> invalid;
-    const MorphResult linear = linear_morph(source, target, options.frames, &invalid);
-    files.push_back({*svg, comparison_filmstrip_svg(source, result.frames, linear.frames, result.times, 7, invalid,
-                                                    title)});
+    MorphStickFiguresOptions linear;
+    linear.method = MorphMethod::Linear;
+    linear.frames = options.frames;
+    const MorphStickFiguresResult straight = morph_stick_figures(source, target, linear);
+    files.push_back({*svg, comparison_filmstrip_svg(source, result.frames, straight.frames, result.times, 7,
+                                                    straight.stats.invalid_frames, title)});
   } else if (svg) {
-    files.push_back({*svg, filmstrip_svg(source, result.frames, result.times, 7, overlay ? &triangulation : nullptr,
-                                         title)});
+    files.push_back({*svg, filmstrip_svg(source, overlay ? result.node_frames : result.frames, result.times, 7,
+                                         overlay ? &*result.triangulation : nullptr, title)});
   }
   cli::write_files_atomically(files);
   return kExitSuccess;
+}
+
+// Help lines that quote limits read them from argument_limits.h, so that the
+// help cannot drift from what the engine enforces.
+std::string range_help(int fallback, int least, int most) {
+  return "(default " + std::to_string(fallback) + ", " + std::to_string(least) + " to " + std::to_string(most) + ")";
+}
+
+std::string frames_help() {
+  return "number of frames, at t = k/(N-1) " + range_help(kDefaultMorphFrames, kMinMorphFrames, kMaxMorphFrames);
+}
+
+std::string enclosure_sides_help() {
+  return "sides of the common convex enclosure " +
+         range_help(kDefaultEnclosureSides, kMinEnclosureSides, kMaxEnclosureSides);
 }
 
 const std::vector<CommandSpec>& commands() {
@@ -281,7 +284,7 @@ const std::vector<CommandSpec>& commands() {
        {"SOURCE.json", "TARGET.json"},
        {{"--output", "-o", "OUT.json", "where to write the triangulation object (required)"},
         {"--steiner", "", "NAME", "compatible triangulation method: improved (default), sg2001 or aronov"},
-        {"--enclosure-sides", "", "K", "sides of the common convex enclosure (default 6, 3 to 1000)"},
+        {"--enclosure-sides", "", "K", enclosure_sides_help()},
         {"--svg", "", "FILE", "also draw both triangulations side by side"}},
        "compatibly triangulate two stick figures inside a common enclosure",
        "Builds the compatible triangulation of the two figures that the morph uses\n"
@@ -294,10 +297,10 @@ const std::vector<CommandSpec>& commands() {
       {"morph",
        {"SOURCE.json", "TARGET.json"},
        {{"--output", "-o", "OUT.json", "where to write the morph (required)"},
-        {"--frames", "", "N", "number of frames, at t = k/(N-1) (default 50, 2 to 100000)"},
+        {"--frames", "", "N", frames_help()},
         {"--steiner", "", "NAME", "compatible triangulation method: improved (default), sg2001 or aronov"},
         {"--weights", "", "KIND", "barycentric weights: mvc (default), uniform or floater"},
-        {"--enclosure-sides", "", "K", "sides of the common convex enclosure (default 6, 3 to 1000)"},
+        {"--enclosure-sides", "", "K", enclosure_sides_help()},
         {"--method", "", "NAME", "barycentric (default) or linear (straight-line baseline, Fig. 8d)"},
         {"--no-verify", "", "", "skip the exact check of every frame"},
         {"--svg", "", "FILE", "also draw a filmstrip of about seven frames"},
@@ -365,69 +368,114 @@ std::string command_help(const CommandSpec& command) {
   return text;
 }
 
-const OptionSpec* find_option(const CommandSpec& command, std::string_view name) {
-  for (const OptionSpec& option : command.options) {
-    if (option.name == name || (!option.short_name.empty() && option.short_name == name)) {
-      return &option;
-    }
-  }
-  return nullptr;
-}
-
-// Splits a command's arguments into positionals and options. Accepts
-// "--name value", "--name=value", "-o value"; "--" ends the options so that a
-// file named "-x.json" can still be passed. Returns false if help was asked.
-bool parse_arguments(const CommandSpec& command, const std::vector<std::string>& arguments,
-                     ParsedArguments& parsed) {
-  bool options_ended = false;
-  for (std::size_t k = 0; k < arguments.size(); ++k) {
+// The argument before "--", if any, that names `option` (as "--name" or
+// "--name=value"); `with_value` selects the "=value" form.
+std::optional<std::size_t> find_argument(const std::vector<std::string>& arguments, const OptionSpec& option,
+                                         bool with_value) {
+  for (std::size_t k = 0; k < arguments.size() && arguments[k] != "--"; ++k) {
     const std::string& argument = arguments[k];
-    const bool looks_like_option = argument.size() > 1 && argument[0] == '-';
-    if (options_ended || !looks_like_option) {
-      parsed.positional.push_back(argument);
-      continue;
-    }
-    if (argument == "--") {
-      options_ended = true;
-      continue;
-    }
-    if (is_help_flag(argument)) return false;
     const std::size_t equals = argument.find('=');
     const std::string name = argument.substr(0, equals);
-    const OptionSpec* option = find_option(command, name);
-    if (option == nullptr) fail_usage(command, "unknown option " + quoted(name));
-    const std::string long_name(option->name);
-    if (parsed.options.count(long_name) != 0) {
-      fail_usage(command, "option " + quoted(long_name) + " given twice");
-    }
-    if (option->value_name.empty()) {
-      if (equals != std::string::npos) {
-        fail_usage(command, "option " + quoted(long_name) + " takes no value");
-      }
-      parsed.options[long_name] = "";
-    } else if (equals != std::string::npos) {
-      parsed.options[long_name] = argument.substr(equals + 1);
+    if (name != option.name && (option.short_name.empty() || name != option.short_name)) continue;
+    if ((equals != std::string::npos) == with_value) return k;
+  }
+  return std::nullopt;
+}
+
+// CLI11 reports a value given to a flag and an option without its value
+// both as ArgumentMismatch, in its own words; FORMAT.md's one-line errors
+// name the option the way this CLI always has, so tell the two apart from
+// the arguments themselves (not from CLI11's text, which changes between
+// versions).
+[[noreturn]] void fail_mismatch(const CommandSpec& command, const std::vector<std::string>& arguments,
+                                const CLI::ParseError& error) {
+  for (const OptionSpec& option : command.options)
+    if (option.value_name.empty() && find_argument(arguments, option, true))
+      fail_usage(command, "option " + single_quoted(option.name) + " takes no value");
+  for (const OptionSpec& option : command.options) {
+    if (option.value_name.empty()) continue;
+    const auto bare = find_argument(arguments, option, false);
+    const auto joined = find_argument(arguments, option, true);
+    const bool at_end = bare && (*bare + 1 == arguments.size() || arguments[*bare + 1] == "--");
+    const bool empty_join = joined && arguments[*joined].back() == '=';
+    if (at_end || empty_join)
+      fail_usage(command, "option " + single_quoted(option.name) + " needs a value " + std::string(option.value_name));
+  }
+  fail_usage(command, error.what());
+}
+
+// Parses a command's arguments with CLI11 into positionals and options.
+// Accepts "--name value", "--name=value", "-o value"; "--" ends the options
+// so that a file named "-x.json" can still be passed. Returns false if help
+// was asked (-h or --help anywhere). Every mistake becomes one
+// InvalidArgumentError naming the command (fail_usage), never CLI11's
+// multi-line report.
+bool parse_arguments(const CommandSpec& command, const std::vector<std::string>& arguments,
+                     ParsedArguments& parsed) {
+  CLI::App app{std::string(command.summary), "stickmorph " + std::string(command.name)};
+  app.set_help_flag("-h,--help");
+  // Every value is kept as text: the command converts and checks it (the
+  // engine's limits, its own wording), and a repeated option is refused
+  // below rather than by CLI11's policy so that the message names it.
+  std::vector<std::vector<std::string>> values(command.options.size());
+  std::vector<CLI::Option*> handles;
+  for (std::size_t k = 0; k < command.options.size(); ++k) {
+    const OptionSpec& option = command.options[k];
+    std::string names(option.name);
+    if (!option.short_name.empty()) names = std::string(option.short_name) + "," + names;
+    if (option.value_name.empty()) {
+      handles.push_back(app.add_flag(names)->description(std::string(option.help))->disable_flag_override());
     } else {
-      if (k + 1 >= arguments.size()) {
-        fail_usage(command, "option " + quoted(long_name) + " needs a value " +
-                                std::string(option->value_name));
-      }
-      parsed.options[long_name] = arguments[++k];
+      handles.push_back(app.add_option(names, values[k], std::string(option.help))
+                            ->type_name(std::string(option.value_name))
+                            ->expected(1)
+                            ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll));
     }
   }
-  const std::size_t expected = command.positional_names.size();
-  for (std::size_t k = 0; k < parsed.positional.size() && k < expected; ++k) {
+  std::vector<std::string> files(command.positional_names.size());
+  for (std::size_t k = 0; k < files.size(); ++k)
+    app.add_option(std::string(command.positional_names[k]), files[k])->required();
+
+  const auto options_end = std::find(arguments.begin(), arguments.end(), std::string("--"));
+  std::vector<std::string> reversed(arguments.rbegin(), arguments.rend());  // CLI11 pops from the back
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    return false;
+  } catch (const CLI::ArgumentMismatch& error) {
+    fail_mismatch(command, arguments, error);
+  } catch (const CLI::RequiredError&) {
+    for (std::size_t k = 0; k < files.size(); ++k)
+      if (app.get_option(std::string(command.positional_names[k]))->count() == 0)
+        fail_usage(command, "missing argument " + std::string(command.positional_names[k]));
+    fail_usage(command, "missing argument");
+  } catch (const CLI::ExtrasError&) {
+    // The first argument CLI11 could not place, in command-line order.
+    const std::string first = app.remaining().front();
+    if (first.size() > 1 && first[0] == '-' && std::find(arguments.begin(), options_end, first) != options_end)
+      fail_usage(command, "unknown option " + single_quoted(first.substr(0, first.find('='))));
+    fail_usage(command, "unexpected extra argument " + single_quoted(first));
+  } catch (const CLI::ParseError& error) {
+    fail_usage(command, error.what());
+  }
+  for (std::size_t k = 0; k < command.options.size(); ++k) {
+    const OptionSpec& option = command.options[k];
+    if (handles[k]->count() > 1) fail_usage(command, "option " + single_quoted(option.name) + " given twice");
+    if (handles[k]->count() == 1)
+      parsed.options[std::string(option.name)] = option.value_name.empty() ? std::string() : values[k].front();
+  }
+  // CLI11 reads "-1" as a number and places it as a file; docs/CLI.md
+  // promises that before "--" every argument starting with '-' (but "-")
+  // is an option.
+  for (const std::string& file : files)
+    if (file.size() > 1 && file[0] == '-' && std::find(arguments.begin(), options_end, file) != options_end)
+      fail_usage(command, "unknown option " + single_quoted(file.substr(0, file.find('='))));
+  for (std::size_t k = 0; k < files.size(); ++k) {
     // "" would otherwise surface as ": cannot read file", naming nothing.
-    if (parsed.positional[k].empty())
+    if (files[k].empty())
       fail_usage(command, "empty file name given for " + std::string(command.positional_names[k]));
   }
-  if (parsed.positional.size() < expected) {
-    fail_usage(command, "missing argument " +
-                            std::string(command.positional_names[parsed.positional.size()]));
-  }
-  if (parsed.positional.size() > expected) {
-    fail_usage(command, "unexpected extra argument " + quoted(parsed.positional[expected]));
-  }
+  parsed.positional = std::move(files);
   return true;
 }
 
@@ -440,7 +488,7 @@ int run(const std::vector<std::string>& arguments) {
   const std::vector<std::string> rest(arguments.begin() + 1, arguments.end());
   if (is_help_flag(first) || first == "--version") {
     if (!rest.empty()) {
-      throw InvalidArgumentError(first + " takes no arguments, got " + quoted(rest[0]));
+      throw InvalidArgumentError(first + " takes no arguments, got " + single_quoted(rest[0]));
     }
     write_stdout(first == "--version" ? std::string("stickmorph ") + kVersion + "\n"
                                       : global_help());
@@ -457,7 +505,7 @@ int run(const std::vector<std::string>& arguments) {
   }
   const bool looks_like_option = first.size() > 1 && first[0] == '-';
   const std::string what = looks_like_option ? "unknown option " : "unknown command ";
-  throw InvalidArgumentError(what + quoted(first) + "; commands: " + command_names() +
+  throw InvalidArgumentError(what + single_quoted(first) + "; commands: " + command_names() +
                              " (see 'stickmorph --help')");
 }
 

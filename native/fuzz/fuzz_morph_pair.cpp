@@ -1,15 +1,17 @@
 // Fuzz target: the engine end to end on a pair of figures.
 //
-// check_compatibility -> triangulate_figures -> morph_triangulation (every
-// frame verified exactly) -> linear_morph, with these oracles besides the
-// typed-error contract of fuzz_common.h:
-//  - triangulate_figures succeeds or fails with a non-compatibility error
+// check_compatibility -> morph_stick_figures (Algorithm 3, every frame
+// verified exactly) -> morph_stick_figures with the linear method, the
+// engine's one entry the CLI and the module use, with these oracles besides
+// the typed-error contract of fuzz_common.h:
+//  - morph_stick_figures succeeds or fails with a non-compatibility error
 //    exactly when check_compatibility says compatible; on incompatible
 //    figures it must throw IncompatibleFiguresError.
 //  - the triangulation's first n nodes are the figures' vertices, bitwise.
 //  - the morph has the requested number of frames, its times run from 0 to
-//    1, and its first and last frames are exactly the triangulation's source
-//    and target positions (morph.h).
+//    1, its frames hold the figure's n vertices (step 5), and its first and
+//    last frames of all nodes are exactly the triangulation's source and
+//    target positions (morph.h).
 //
 // Two input encodings, told apart by the first byte:
 //
@@ -51,6 +53,7 @@
 #include "stickmorph/figure_triangulation.h"
 #include "stickmorph/json.h"
 #include "stickmorph/morph.h"
+#include "stickmorph/morph_stick_figures.h"
 
 using namespace stickmorph;
 
@@ -62,8 +65,7 @@ constexpr int kJsonFrames = 3;
 struct PairInput {
   StickFigure source;
   StickFigure target;
-  FigureTriangulationOptions triangulation;
-  MorphOptions morph;
+  MorphStickFiguresOptions options;
 };
 
 bool same_positions(const Vec2* a, const Vec2* b, std::size_t count) {
@@ -83,12 +85,12 @@ PairInput decode_json_pair(const std::string& text) {
   input.source = parse_figure(to_json(*source), "source");
   input.target = parse_figure(to_json(*target), "target");
   if (const JsonValue* steiner = document.find("steiner")) {
-    input.triangulation.method = parse_steiner_method(steiner->as_string());
+    input.options.steiner = parse_steiner_method(steiner->as_string());
   }
   if (const JsonValue* weights = document.find("weights")) {
-    input.morph.weights = parse_weight_kind(weights->as_string());
+    input.options.weights = parse_weight_kind(weights->as_string());
   }
-  input.morph.frames = kJsonFrames;
+  input.options.frames = kJsonFrames;
   return input;
 }
 
@@ -110,14 +112,14 @@ PairInput decode_binary_pair(const std::uint8_t* data, std::size_t size) {
   const int n = 1 + bytes.next() % 16;
   const int exponent = int(bytes.next()) - 128;
   PairInput input;
-  input.triangulation.enclosure_sides = 3 + bytes.next() % 8;
+  input.options.enclosure_sides = 3 + bytes.next() % 8;
   static constexpr SteinerMethod kMethods[] = {SteinerMethod::Improved, SteinerMethod::Sg2001,
                                                SteinerMethod::Aronov, SteinerMethod::Improved};
   static constexpr WeightKind kWeights[] = {WeightKind::MeanValue, WeightKind::Uniform,
                                             WeightKind::Floater, WeightKind::MeanValue};
-  input.triangulation.method = kMethods[flags & 3];
-  input.morph.weights = kWeights[(flags >> 2) & 3];
-  input.morph.frames = 2 + ((flags >> 4) & 3);
+  input.options.steiner = kMethods[flags & 3];
+  input.options.weights = kWeights[(flags >> 2) & 3];
+  input.options.frames = 2 + ((flags >> 4) & 3);
   const bool reverse_target_edges = (flags >> 6) & 1;
 
   std::vector<Vec2> source(n);
@@ -155,18 +157,18 @@ void morph_pair(const PairInput& input) {
   const CompatibilityReport report = check_compatibility(source, target);
   if (!report.compatible()) {
     try {
-      triangulate_figures(source, target, input.triangulation);
+      morph_stick_figures(source, target, input.options);
     } catch (const IncompatibleFiguresError&) {
       fuzz::trace("incompatible: " + report.reason);
       return;  // the expected answer
     } catch (const Error& error) {
       fuzz::report_finding(std::string("incompatible figures (") + report.reason +
-                           "), but triangulate_figures threw another error: " + error.what());
+                           "), but morph_stick_figures threw another error: " + error.what());
     }
-    fuzz::report_finding("triangulate_figures accepted figures check_compatibility rejects: " +
+    fuzz::report_finding("morph_stick_figures accepted figures check_compatibility rejects: " +
                          report.reason);
   }
-  if (input.triangulation.method != SteinerMethod::Improved &&
+  if (input.options.steiner.value_or(SteinerMethod::Improved) != SteinerMethod::Improved &&
       source.vertices.size() > kMaxVerticesForSpiderwebs) {
     fuzz::trace("skipped: spiderweb method on a large figure");
     return;
@@ -190,7 +192,12 @@ void morph_pair(const PairInput& input) {
 void triangulate_and_morph(const PairInput& input) {
   const StickFigure& source = input.source;
   const StickFigure& target = input.target;
-  const FigureTriangulation triangulation = triangulate_figures(source, target, input.triangulation);
+  MorphStickFiguresOptions options = input.options;
+  // All nodes too, to hold the frames against the triangulation's ends.
+  options.keep_node_frames = true;
+  const MorphStickFiguresResult morph = morph_stick_figures(source, target, options);
+  if (!morph.triangulation) fuzz::report_finding("the barycentric morph returned no triangulation");
+  const FigureTriangulation& triangulation = *morph.triangulation;
   const std::size_t n = source.vertices.size();
   if (std::size_t(triangulation.figure_vertices) != n ||
       triangulation.source.size() != std::size_t(triangulation.node_count()) ||
@@ -200,29 +207,32 @@ void triangulate_and_morph(const PairInput& input) {
     fuzz::report_finding("the triangulation's figure nodes are not the input figures");
   }
 
-  const MorphResult morph = morph_triangulation(triangulation, source, input.morph);
-  const std::size_t frames = std::size_t(input.morph.frames);
-  if (morph.frames.size() != frames || morph.times.size() != frames || morph.times.front() != 0.0 ||
-      morph.times.back() != 1.0) {
+  const std::size_t frames = std::size_t(options.frames);
+  if (morph.frames.size() != frames || morph.node_frames.size() != frames || morph.times.size() != frames ||
+      morph.times.front() != 0.0 || morph.times.back() != 1.0) {
     fuzz::report_finding("the morph has the wrong frame count or times");
   }
   const std::size_t nodes = triangulation.source.size();
-  for (const auto& frame : morph.frames) {
-    if (frame.size() != nodes) fuzz::report_finding("a morph frame has the wrong node count");
+  for (std::size_t f = 0; f < frames; ++f) {
+    if (morph.node_frames[f].size() != nodes) fuzz::report_finding("a morph frame has the wrong node count");
+    if (morph.frames[f].size() != n || !same_positions(morph.frames[f].data(), morph.node_frames[f].data(), n))
+      fuzz::report_finding("a figure frame is not the first n nodes of its frame");
   }
-  if (!same_positions(morph.frames.front().data(), triangulation.source.data(), nodes) ||
-      !same_positions(morph.frames.back().data(), triangulation.target.data(), nodes)) {
+  if (!same_positions(morph.node_frames.front().data(), triangulation.source.data(), nodes) ||
+      !same_positions(morph.node_frames.back().data(), triangulation.target.data(), nodes)) {
     fuzz::report_finding("the morph's first or last frame is not the source or the target");
   }
 
   // The straight-line baseline on the same pair: it may self-intersect, but
   // must not fail on a valid pair.
-  std::vector<int> invalid_frames;
-  const MorphResult linear = linear_morph(source, target, input.morph.frames, &invalid_frames);
+  MorphStickFiguresOptions straight;
+  straight.method = MorphMethod::Linear;
+  straight.frames = options.frames;
+  const MorphStickFiguresResult linear = morph_stick_figures(source, target, straight);
   if (linear.frames.size() != frames ||
       !same_positions(linear.frames.front().data(), source.vertices.data(), n) ||
       !same_positions(linear.frames.back().data(), target.vertices.data(), n)) {
-    fuzz::report_finding("linear_morph's end frames are not the input figures");
+    fuzz::report_finding("the linear morph's end frames are not the input figures");
   }
   fuzz::trace("morphed: " + std::to_string(n) + " vertices, " +
               std::to_string(triangulation.steiner_vertices) + " Steiner, " +

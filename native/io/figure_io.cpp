@@ -161,7 +161,7 @@ StickFigure parse_figure(const std::string& text, const std::string& origin) {
 
 StickFigure read_figure_file(const std::string& path) {
   const auto fail = [&path](int error_number) {
-    throw JsonError(path + ": cannot read file: " + std::strerror(error_number));
+    throw FileError(path, error_number, path + ": cannot read file: " + std::strerror(error_number));
   };
   struct CloseFile {
     void operator()(std::FILE* file) const { std::fclose(file); }
@@ -176,7 +176,7 @@ StickFigure read_figure_file(const std::string& path) {
     const std::size_t count = std::fread(buffer, 1, sizeof buffer, file.get());
     text.append(buffer, count);
     if (text.size() > kMaxFigureFileBytes) {
-      throw JsonError(path + ": cannot read file: larger than " +
+      throw FileError(path, EFBIG, path + ": cannot read file: larger than " +
                       std::to_string(kMaxFigureFileBytes >> 20) + " MiB");
     }
     if (count < sizeof buffer) {

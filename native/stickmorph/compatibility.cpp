@@ -168,7 +168,7 @@ CompatibilityReport check_compatibility(const StickFigure& source, const StickFi
 
 void require_compatible(const StickFigure& source, const StickFigure& target) {
   const CompatibilityReport report = check_compatibility(source, target);
-  if (!report.compatible()) throw IncompatibleFiguresError("incompatible figures: " + report.reason);
+  if (!report.compatible()) throw IncompatibleFiguresError(report.kind, "incompatible figures: " + report.reason, report.vertices);
 }
 
 }  // namespace stickmorph

@@ -887,7 +887,7 @@ std::vector<std::array<int, 3>> triangulate_checked(const CornerPolygon& polygon
     return triangulate_polygon(polygon);
   } catch (const InvalidFigureError& e) {
     throw InvalidFigureError(e.defect(), label + " in the " + (target ? "target" : "source") + ": " + e.what(),
-                             e.vertices(), e.edges());
+                             e.vertices(), e.edges(), target ? "target" : "source");
   }
 }
 

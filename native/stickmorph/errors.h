@@ -3,11 +3,14 @@
 // Errors are part of the interface: every bad input gets an exception whose
 // message names what is wrong and where (vertex indices, edge indices, faces).
 // The CLI prints `error: <what()>` and exits 2; the Python module maps each
-// class onto a `ValueError` subclass with the same message.
+// class onto a `ValueError` subclass with the same message (FileError also
+// onto OSError, InternalError onto RuntimeError), and carries the fields
+// below as attributes.
 #pragma once
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace stickmorph {
@@ -25,6 +28,22 @@ class JsonError : public Error {
   using Error::Error;
 };
 
+/// A file that cannot be read at all (missing, a directory, no permission,
+/// too large): an operating-system failure, not a JSON one, so that callers
+/// can tell "fix the path" from "fix the file". `error_number` is the errno
+/// value (EFBIG for a file over the size limit); `path` the file as given.
+class FileError : public Error {
+ public:
+  FileError(std::string path, int error_number, std::string message)
+      : Error(std::move(message)), path_(std::move(path)), error_number_(error_number) {}
+  const std::string& path() const { return path_; }
+  int error_number() const { return error_number_; }
+
+ private:
+  std::string path_;
+  int error_number_;
+};
+
 /// What is wrong with a stick figure. A stick figure is a connected
 /// straight-line plane graph (paper, section 1).
 enum class FigureDefect {
@@ -39,26 +58,40 @@ enum class FigureDefect {
   OverlappingEdges,      ///< two collinear edges share more than a point
   VertexOnEdge,          ///< a vertex lies on an edge not incident to it
   Disconnected,          ///< the graph has more than one component
+  // Defects of a polygon given by its corner sequence (triangulate_polygon,
+  // compatible_triangulation): a weakly simple polygon needs at least three
+  // corners, distinct consecutive positions, counter-clockwise order and
+  // one wedge per corner.
+  TooFewCorners,         ///< fewer than 3 corners
+  CoincidentCorners,     ///< two corners at one position, or a corner repeating its successor
+  ClockwiseCorners,      ///< a corner opens onto the outside: the order is not counter-clockwise
+  ClosedWedge,           ///< a corner's wedge is closed by another edge or claimed by another corner
+  SelfOverlappingPolygon,///< the interior does not triangulate into #corners - 2 triangles
 };
 
 /// A stick figure that violates one of the rules above. `vertices` and
-/// `edges` hold the indices named in the message, in that order.
+/// `edges` hold the indices named in the message, in that order. `role`
+/// says which figure of a pair it is ("source" or "target"), empty for a
+/// figure on its own, so that callers need not parse the message for it.
 class InvalidFigureError : public Error {
  public:
   InvalidFigureError(FigureDefect defect, std::string message,
-                     std::vector<int> vertices = {}, std::vector<int> edges = {})
+                     std::vector<int> vertices = {}, std::vector<int> edges = {}, std::string role = {})
       : Error(std::move(message)),
         defect_(defect),
         vertices_(std::move(vertices)),
-        edges_(std::move(edges)) {}
+        edges_(std::move(edges)),
+        role_(std::move(role)) {}
   FigureDefect defect() const { return defect_; }
   const std::vector<int>& vertices() const { return vertices_; }
   const std::vector<int>& edges() const { return edges_; }
+  const std::string& role() const { return role_; }
 
  private:
   FigureDefect defect_;
   std::vector<int> vertices_;
   std::vector<int> edges_;
+  std::string role_;
 };
 
 /// Arguments that are malformed independently of geometry: arrays of the
@@ -68,12 +101,24 @@ class InvalidArgumentError : public Error {
   using Error::Error;
 };
 
+/// Why two figures are not compatible; defined in compatibility.h (the
+/// opaque declaration keeps this header free of the figure types).
+enum class Incompatibility;
+
 /// A pair of figures that cannot be morphed because they are not compatible
 /// (paper, section 2.1). `check` reports this as a result, not an error;
-/// operations that need compatibility throw it.
+/// operations that need compatibility throw it, with the report's kind and
+/// the vertices its reason names.
 class IncompatibleFiguresError : public Error {
  public:
-  using Error::Error;
+  IncompatibleFiguresError(Incompatibility kind, std::string message, std::vector<int> vertices = {})
+      : Error(std::move(message)), kind_(kind), vertices_(std::move(vertices)) {}
+  Incompatibility kind() const { return kind_; }
+  const std::vector<int>& vertices() const { return vertices_; }
+
+ private:
+  Incompatibility kind_;
+  std::vector<int> vertices_;
 };
 
 /// A result failed exact verification and could not be repaired: the engine

@@ -318,7 +318,7 @@ FigureTriangulation triangulate_figures(const StickFigure& source, const StickFi
   const Decomposition source_dec = decompose(source);
   const Decomposition target_dec = decompose(target);
   const CompatibilityReport report = check_compatibility(source, source_dec, target, target_dec);
-  if (!report.compatible()) throw IncompatibleFiguresError("incompatible figures: " + report.reason);
+  if (!report.compatible()) throw IncompatibleFiguresError(report.kind, "incompatible figures: " + report.reason, report.vertices);
   measured.decompose_ms = ms_since(stage_start);
   stage_start = Clock::now();
 

@@ -345,8 +345,11 @@ std::vector<double> node_weights(const FigureTriangulation& tri, const Topology&
   }
   for (double x : w)
     if (!(x > 0) || !std::isfinite(x))
-      malformed("the triangles around " + node_text(tri, v) +
-                " are too close to degenerate for convex-combination weights");
+      // Not the caller's fault: every triangle passed the exact orientation
+      // test (require_positive), and the weights of a valid triangle are positive in
+      // exact arithmetic, so it is this computation that failed.
+      throw InternalError("morph: the triangles around " + node_text(tri, v) +
+                          " are too close to degenerate for convex-combination weights");
   return w;
 }
 

@@ -28,9 +28,8 @@ using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::No_con
 using VertexHandle = Cdt::Vertex_handle;
 using FaceHandle = Cdt::Face_handle;
 
-[[noreturn]] void reject(const std::string& what, std::vector<int> vertices) {
-  throw InvalidFigureError(FigureDefect::CrossingEdges, "polygon is not weakly simple: " + what,
-                           std::move(vertices));
+[[noreturn]] void reject(FigureDefect defect, const std::string& what, std::vector<int> vertices) {
+  throw InvalidFigureError(defect, "polygon is not weakly simple: " + what, std::move(vertices));
 }
 
 // Names two polygon edges that meet where they should not (brute force: this
@@ -72,7 +71,7 @@ std::pair<FaceHandle, int> face_left_of(const Cdt& cdt, VertexHandle a, VertexHa
 
 std::vector<std::array<int, 3>> triangulate_polygon(const CornerPolygon& polygon) {
   const int n = polygon.size();
-  if (n < 3) reject("it has " + std::to_string(n) + " corners", {});
+  if (n < 3) reject(FigureDefect::TooFewCorners, "it has " + std::to_string(n) + " corners", {});
 
   Cdt cdt;
   std::map<int, VertexHandle> handle;  // vertex id -> CDT vertex
@@ -82,7 +81,8 @@ std::vector<std::array<int, 3>> triangulate_polygon(const CornerPolygon& polygon
       const std::size_t before = cdt.number_of_vertices();
       VertexHandle v = cdt.insert(Kernel::Point_2(p[0], p[1]));
       if (cdt.number_of_vertices() == before)
-        reject("vertices " + std::to_string(v->info()) + " and " + std::to_string(id) + " coincide",
+        reject(FigureDefect::CoincidentCorners,
+               "vertices " + std::to_string(v->info()) + " and " + std::to_string(id) + " coincide",
                {v->info(), id});
       v->info() = id;
       handle[id] = v;
@@ -93,20 +93,20 @@ std::vector<std::array<int, 3>> triangulate_polygon(const CornerPolygon& polygon
     std::set<std::pair<int, int>> inserted;
     for (int k = 0; k < n; ++k) {
       const int a = polygon.corners[k], b = polygon.corners[(k + 1) % n];
-      if (a == b) reject("corner " + std::to_string(k) + " repeats its successor", {a});
+      if (a == b) reject(FigureDefect::CoincidentCorners, "corner " + std::to_string(k) + " repeats its successor", {a});
       if (inserted.emplace(std::min(a, b), std::max(a, b)).second) cdt.insert_constraint(handle[a], handle[b]);
     }
   } catch (const Cdt::Intersection_of_constraints_exception&) {
     std::vector<int> vertices;
     const std::string what = find_bad_contact(polygon, vertices);
-    reject(what, vertices);
+    reject(FigureDefect::CrossingEdges, what, vertices);
   }
   // A polygon edge passing through another vertex is split by CGAL into two
   // constraints; detect it as a missing edge.
   for (int k = 0; k < n; ++k) {
     const int a = polygon.corners[k], b = polygon.corners[(k + 1) % n];
     if (face_left_of(cdt, handle[a], handle[b]).second < 0)
-      reject("its edge from corner " + std::to_string(k) + " (vertex " + std::to_string(a) +
+      reject(FigureDefect::VertexOnEdge, "its edge from corner " + std::to_string(k) + " (vertex " + std::to_string(a) +
                  ") to vertex " + std::to_string(b) + " passes through another vertex",
              {a, b});
   }
@@ -123,12 +123,13 @@ std::vector<std::array<int, 3>> triangulate_polygon(const CornerPolygon& polygon
     auto [f, i] = face_left_of(cdt, v, next);
     for (int guard = 0;; ++guard) {
       if (cdt.is_infinite(f) || guard > int(cdt.number_of_faces()) + 2)
-        reject("corner " + std::to_string(k) + " (vertex " + std::to_string(polygon.corners[k]) +
+        reject(FigureDefect::ClockwiseCorners,
+               "corner " + std::to_string(k) + " (vertex " + std::to_string(polygon.corners[k]) +
                    ") opens onto the outside: the corners are not in counter-clockwise order",
                {polygon.corners[k]});
       const int j = f->index(v);
       if (f->info()[j] >= 0)
-        reject("corners " + std::to_string(f->info()[j]) + " and " + std::to_string(k) +
+        reject(FigureDefect::ClosedWedge, "corners " + std::to_string(f->info()[j]) + " and " + std::to_string(k) +
                    " claim the same wedge at vertex " + std::to_string(polygon.corners[k]),
                {polygon.corners[k]});
       f->info()[j] = k;
@@ -136,7 +137,7 @@ std::vector<std::array<int, 3>> triangulate_polygon(const CornerPolygon& polygon
       const int side = Cdt::ccw(j);
       if (cdt.is_constrained({f, side})) {
         if (f->vertex(Cdt::cw(j)) != prev)
-          reject("the wedge at corner " + std::to_string(k) + " (vertex " +
+          reject(FigureDefect::ClosedWedge, "the wedge at corner " + std::to_string(k) + " (vertex " +
                      std::to_string(polygon.corners[k]) + ") is closed by another edge",
                  {polygon.corners[k]});
         break;
@@ -152,10 +153,10 @@ std::vector<std::array<int, 3>> triangulate_polygon(const CornerPolygon& polygon
     const int assigned = (c[0] >= 0) + (c[1] >= 0) + (c[2] >= 0);
     if (assigned == 3) triangles.push_back(c);
     else if (assigned != 0)
-      reject("a triangle touches the region at only some of its corners", {});
+      reject(FigureDefect::SelfOverlappingPolygon, "a triangle touches the region at only some of its corners", {});
   }
   if (int(triangles.size()) != n - 2)
-    reject("its interior triangulates into " + std::to_string(triangles.size()) +
+    reject(FigureDefect::SelfOverlappingPolygon, "its interior triangulates into " + std::to_string(triangles.size()) +
                " triangles instead of " + std::to_string(n - 2) +
                " (it overlaps itself or runs clockwise)",
            {});

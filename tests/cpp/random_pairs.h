@@ -54,6 +54,7 @@
 #include "stickmorph/figure_io.h"
 #include "stickmorph/json.h"
 #include "stickmorph/morph.h"
+#include "stickmorph/morph_stick_figures.h"
 #include "stickmorph/stick_figure.h"
 
 namespace stickmorph::test {
@@ -590,21 +591,27 @@ struct PipelineStats {
 };
 
 /// The whole pipeline on a pair with the default options (improved Steiner
-/// method, mean value weights): triangulate_figures, verify_figure_triangulation
-/// again, morph_triangulation with `frames` frames, then every frame checked
-/// again independently of the morph's own check: endpoints exact, every
-/// triangle counter-clockwise (exact), and verify_frame on the figure.
+/// method, mean value weights), through the engine's one entry
+/// morph_stick_figures with `frames` frames, then checked again
+/// independently of the engine's own checks: the triangulation verified
+/// again, endpoints exact, frames of the figure's n vertices only, every
+/// triangle counter-clockwise (exact) in every frame of all nodes, and
+/// verify_frame on the figure.
 /// Returns an empty string on success, else what failed; any exception is
 /// caught and reported with its class.
 inline std::string morph_and_verify(const StickFigure& source, const StickFigure& target, int frames,
                                     PipelineStats* stats = nullptr) {
   try {
-    const FigureTriangulation tri = triangulate_figures(source, target);
-    verify_figure_triangulation(tri, source);
-    MorphOptions options;
+    MorphStickFiguresOptions options;
     options.frames = frames;
-    const MorphResult result = morph_triangulation(tri, source, options);
-    if (int(result.frames.size()) != frames || int(result.times.size()) != frames)
+    // The triangles can only be re-checked on every node's position.
+    options.keep_node_frames = true;
+    const MorphStickFiguresResult result = morph_stick_figures(source, target, options);
+    if (!result.triangulation) return "the barycentric morph returned no triangulation";
+    const FigureTriangulation& tri = *result.triangulation;
+    verify_figure_triangulation(tri, source);
+    if (int(result.frames.size()) != frames || int(result.times.size()) != frames ||
+        int(result.node_frames.size()) != frames)
       return "morph returned " + std::to_string(result.frames.size()) + " frames, asked for " + std::to_string(frames);
     const std::size_t n = source.vertices.size();
     for (std::size_t v = 0; v < n; ++v) {
@@ -614,20 +621,22 @@ inline std::string morph_and_verify(const StickFigure& source, const StickFigure
     }
     const Decomposition decomposition = decompose(source);
     for (int f = 0; f < frames; ++f) {
-      const std::vector<Vec2>& all = result.frames[f];
+      const std::vector<Vec2>& all = result.node_frames[f];
       if (int(all.size()) != tri.node_count()) return "frame " + std::to_string(f) + " has the wrong node count";
+      if (result.frames[f].size() != n) return "frame " + std::to_string(f) + " holds more than the figure";
+      if (!std::equal(result.frames[f].begin(), result.frames[f].end(), all.begin()))
+        return "frame " + std::to_string(f) + ": the figure's vertices are not the first nodes";
       for (std::size_t i = 0; i < tri.triangles.size(); ++i) {
         const auto& tr = tri.triangles[i];
         if (orientation(all[tr[0]], all[tr[1]], all[tr[2]]) <= 0)
           return frame_label(f, result.times[f]) + ": triangle " + std::to_string(i) + " (" + std::to_string(tr[0]) +
                  ", " + std::to_string(tr[1]) + ", " + std::to_string(tr[2]) + ") is not counter-clockwise";
       }
-      verify_frame(source, decomposition, std::vector<Vec2>(all.begin(), all.begin() + long(n)), f,
-                   result.times[f]);
+      verify_frame(source, decomposition, result.frames[f], f, result.times[f]);
     }
     if (stats) {
-      stats->steiner_vertices = tri.steiner_vertices;
-      stats->triangles = int(tri.triangles.size());
+      stats->steiner_vertices = result.stats.steiner_vertices;
+      stats->triangles = result.stats.triangles;
       stats->frames_verified = frames;
     }
     return {};

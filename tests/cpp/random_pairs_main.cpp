@@ -1,6 +1,8 @@
 // stickmorph_random_pairs: the long mode of the random-pair property test
 // (random_pairs.h). Runs N pairs through the whole pipeline, saves every
 // failing pair as a regression case and exits 1 if anything failed.
+#include <CLI/CLI.hpp>
+
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -15,6 +17,7 @@
 #include <vector>
 
 #include "random_pairs.h"
+#include "stickmorph/argument_limits.h"
 
 using namespace stickmorph;
 using namespace stickmorph::test;
@@ -32,9 +35,9 @@ const char* kUsage =
     "       stickmorph_random_pairs --long-if-env [--save-failures DIR]\n"
     "\n"
     "Generates random compatible stick-figure pairs and runs each through the whole\n"
-    "pipeline: triangulate_figures (improved Steiner method), verify_figure_triangulation,\n"
-    "morph_triangulation, and an exact check of every frame (all triangles\n"
-    "counter-clockwise, verify_frame on the figure).\n"
+    "pipeline: morph_stick_figures (improved Steiner method), the triangulation verified\n"
+    "again, and an exact check of every frame (all triangles counter-clockwise,\n"
+    "verify_frame on the figure).\n"
     "\n"
     "Pair i (i = 0..N-1) is (seed S+i, kind i mod 7) in the order polyline, polygon,\n"
     "tree, sparse, dangling, near_touching, near_collinear, or always NAME with --kind.\n"
@@ -68,6 +71,12 @@ std::uint64_t parse_count(const std::string& text, const char* option) {
   return value;
 }
 
+std::vector<std::string> kind_names() {
+  std::vector<std::string> names;
+  for (const PairKind kind : kAllPairKinds) names.push_back(pair_kind_name(kind));
+  return names;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -76,39 +85,30 @@ int main(int argc, char** argv) {
   int frames = 12;
   std::optional<PairKind> only_kind;
   std::string save_dir;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto next = [&]() -> std::string {
-      if (i + 1 >= argc) usage_error(arg + " needs a value");
-      return argv[++i];
-    };
-    if (arg == "--help" || arg == "-h") {
-      std::cout << kUsage;
-      return 0;
-    } else if (arg == "--pairs") {
-      pairs = parse_count(next(), "--pairs");
-    } else if (arg == "--seed") {
-      const std::string value = next();
-      if (value == "random") random_seed = true;
-      else first_seed = parse_count(value, "--seed");
-    } else if (arg == "--kind") {
-      const std::string value = next();
-      only_kind = parse_pair_kind(value);
-      if (!only_kind) usage_error("unknown kind '" + value + "'");
-    } else if (arg == "--frames") {
-      const std::uint64_t value = parse_count(next(), "--frames");
-      if (value < 2 || value > std::uint64_t(kMaxMorphFrames)) usage_error("--frames must be at least 2");
-      frames = int(value);
-    } else if (arg == "--save-failures") {
-      save_dir = next();
-    } else if (arg == "--verbose") {
-      verbose = true;
-    } else if (arg == "--long-if-env") {
-      long_if_env = true;
-    } else {
-      usage_error("unknown argument '" + arg + "'");
-    }
+  std::string pairs_text, seed_text, kind_text;
+  CLI::App app{"random-pair property test", "stickmorph_random_pairs"};
+  app.set_help_flag("-h,--help");
+  // Counts as text: parse_count takes the full uint64 range and refuses a
+  // sign, which CLI11's integer conversion would wrap or accept.
+  app.add_option("--pairs", pairs_text);
+  app.add_option("--seed", seed_text);
+  app.add_option("--kind", kind_text)->check(CLI::IsMember(kind_names()));
+  app.add_option("--frames", frames)->check(CLI::Range(kMinMorphFrames, kMaxMorphFrames));
+  app.add_option("--save-failures", save_dir);
+  app.add_flag("--verbose", verbose);
+  app.add_flag("--long-if-env", long_if_env);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << kUsage;
+    return 0;
+  } catch (const CLI::ParseError& error) {
+    usage_error(error.what());
   }
+  if (app.count("--pairs")) pairs = parse_count(pairs_text, "--pairs");
+  if (seed_text == "random") random_seed = true;
+  else if (app.count("--seed")) first_seed = parse_count(seed_text, "--seed");
+  if (app.count("--kind")) only_kind = parse_pair_kind(kind_text);
   if (long_if_env) {
     const char* flag = std::getenv("STICKMORPH_LONG");
     if (flag == nullptr || std::strcmp(flag, "1") != 0) {

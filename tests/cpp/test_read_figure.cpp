@@ -47,6 +47,8 @@ std::string file_json_error(const std::string& path) {
     read_figure_file(path);
   } catch (const JsonError& error) {
     return error.what();
+  } catch (const FileError& error) {  // a file that cannot be read at all
+    return error.what();
   }
   FAIL("read_figure_file accepted " << path);
   return {};

@@ -192,6 +192,34 @@ def test_double_dash_ends_options(cli, data_dir, tmp_path):
     assert (result.returncode, result.stdout) == (0, "compatible\n")
 
 
+# The argument parser (CLI11) reports its errors in this CLI's words: one
+# line naming the command and the option, never CLI11's own text.
+@pytest.mark.parametrize("arguments, fragment", [
+    (["check", "-1", "b.json"], "check: unknown option '-1'"),
+    (["check", "a.json", "-7"], "check: unknown option '-7'"),
+    (["morph", "a.json", "b.json", "--output="], "morph: option '--output' needs a value OUT.json"),
+    (["morph", "a.json", "b.json", "-o"], "morph: option '--output' needs a value OUT.json"),
+    (["morph", "a.json", "b.json", "-o", "x.json", "--output=y.json"], "option '--output' given twice"),
+    (["morph", "a.json", "b.json", "-o", "x.json", "--no-verify", "--no-verify"],
+     "option '--no-verify' given twice"),
+    (["morph", "a.json", "b.json", "-o", "x.json", "--svg-triangulation=yes"],
+     "option '--svg-triangulation' takes no value"),
+    (["triangulate", "a.json", "b.json", "-o", "x.json", "--framez=3"], "triangulate: unknown option '--framez'"),
+    (["morph", "-o", "x.json", "a.json"], "morph: missing argument TARGET.json"),
+])
+def test_parser_errors_are_one_line_in_our_words(cli, arguments, fragment):
+    result = run(cli, *arguments)
+    assert_single_error_line(result)
+    assert fragment in result.stderr, result.stderr
+    assert "CLI11" not in result.stderr and "required" not in result.stderr
+
+
+def test_a_dash_number_after_double_dash_is_a_file(cli):
+    result = run(cli, "check", "--", "-1", "b.json")
+    assert_single_error_line(result)
+    assert result.stderr == "error: -1: cannot read file: No such file or directory\n"
+
+
 @pytest.mark.skipif(not os.path.exists("/dev/full"), reason="needs /dev/full")
 def test_failed_write_to_stdout_is_an_error(cli, data_dir):
     source, target = pair(data_dir, "compatible", "polygon")

@@ -4,6 +4,7 @@ The module is a thin shell over the engine, so these tests check the shell:
 conversion of arrays in and out, the exception classes and their attributes,
 and that the module and the CLI report the same thing for the same input.
 """
+import errno
 import json
 import math
 import os
@@ -66,7 +67,9 @@ def test_version():
 
 
 @pytest.mark.parametrize("name", ["JsonError", "InvalidFigureError", "InvalidArgumentError",
-                                  "IncompatibleFiguresError"])
+                                  "IncompatibleFiguresError", "FileError", "FigureFileNotFoundError",
+                                  "FigureFileIsADirectoryError", "FigureFilePermissionError",
+                                  "FigureFileNotADirectoryError"])
 def test_input_errors_are_value_errors(name):
     cls = getattr(stickmorph, name)
     assert issubclass(cls, stickmorph.StickMorphError)
@@ -353,7 +356,7 @@ def test_load_figure_path_that_is_not_utf8(tmp_path):
     for argument in (path, os.fsdecode(path)):
         assert stickmorph.load_figure(argument)["vertices"].shape == (4, 2)
     missing = os.fsencode(tmp_path) + b"/gone\xff.json"
-    with pytest.raises(stickmorph.JsonError) as info:
+    with pytest.raises(stickmorph.FileError) as info:
         stickmorph.load_figure(missing)
     # The undecodable byte is shown escaped, not lost with the message.
     assert "gone\\xff.json" in str(info.value)
@@ -377,9 +380,37 @@ def test_load_figure_malformed_json(tmp_path):
 
 
 def test_load_figure_missing_file(tmp_path):
-    with pytest.raises(stickmorph.JsonError) as info:
-        stickmorph.load_figure(tmp_path / "absent.json")
-    assert "absent.json" in str(info.value)
+    # An OSError like open()'s, so `except FileNotFoundError` works, and a
+    # StickMorphError like every other stickmorph failure; the message is the
+    # CLI's.
+    path = tmp_path / "absent.json"
+    with pytest.raises(FileNotFoundError) as info:
+        stickmorph.load_figure(path)
+    error = info.value
+    assert isinstance(error, stickmorph.FigureFileNotFoundError)
+    assert isinstance(error, stickmorph.FileError) and isinstance(error, stickmorph.StickMorphError)
+    assert not isinstance(error, stickmorph.JsonError)
+    assert error.errno == errno.ENOENT and error.filename == str(path)
+    assert error.strerror == "No such file or directory"
+    assert str(error) == f"{path}: cannot read file: No such file or directory"
+
+
+def test_load_figure_directory_and_oversized(tmp_path):
+    with pytest.raises(IsADirectoryError) as info:
+        stickmorph.load_figure(tmp_path)
+    assert isinstance(info.value, stickmorph.FigureFileIsADirectoryError)
+    assert info.value.errno == errno.EISDIR
+    with pytest.raises(NotADirectoryError):
+        stickmorph.load_figure(write_figure(tmp_path / "f.json", SQUARE, SQUARE_EDGES) / "x.json")
+    big = tmp_path / "big.json"
+    with open(big, "wb") as file:
+        file.truncate(65 << 20)
+    with pytest.raises(stickmorph.FileError) as info:
+        stickmorph.load_figure(big)
+    # Over the size limit is no built-in OSError subclass, but an OSError.
+    assert type(info.value) is stickmorph.FileError and isinstance(info.value, OSError)
+    assert info.value.errno == errno.EFBIG
+    assert "larger than 64 MiB" in str(info.value)
 
 
 def test_load_figure_invalid_figure(tmp_path):

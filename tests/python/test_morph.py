@@ -552,10 +552,15 @@ def test_linear_accepts_the_largest_frame_count():
 
 def test_defaults_are_documented():
     doc = stickmorph.morph.__doc__
-    for default in (r"frames: \w+ = 50", r"steiner: \w+ = 'improved'", r"weights: \w+ = 'mvc'",
-                    r"enclosure_sides: \w+ = 6", r"method: \w+ = 'barycentric'",
-                    r"verify: \w+ = True", r"target_edges: \w+ = None"):
+    # The barycentric-only options default to None (not given), so that
+    # method="linear" can refuse them; their effective defaults are in the text.
+    for default in (r"frames: \w+ = 50", r"steiner: \w+ = None", r"weights: \w+ = None",
+                    r"enclosure_sides: \w+ = None", r"method: \w+ = 'barycentric'",
+                    r"verify: \w+ = None", r"target_edges: \w+ = None"):
         assert re.search(default, doc), default
+    for text in ('"improved" (default)', '"mvc" (mean value coordinates, default)', "(default 6)",
+                 "(default True)"):
+        assert text in doc, text
     assert "(N, #V, 2)" in doc and "(N,) float64" in doc
     doc = stickmorph.triangulate_figures.__doc__
     for default in (r"steiner: \w+ = 'improved'", r"enclosure_sides: \w+ = 6",
@@ -587,7 +592,8 @@ def test_unknown_steiner_name_in_triangulate_figures():
 def test_frames_out_of_range(frames, method):
     with pytest.raises(stickmorph.InvalidArgumentError) as error:
         stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=frames, method=method)
-    assert str(error.value) == f"the number of frames must be between 2 and 100000, got {frames}"
+    bound = "at least 2" if frames < 2 else "at most 100000"
+    assert str(error.value) == f"frames must be {bound}, got {frames}"
 
 
 @pytest.mark.parametrize("frames", [2.0, 7.5, "7", True, None])
@@ -597,20 +603,78 @@ def test_frames_not_an_integer(frames):
 
 
 @pytest.mark.parametrize("sides, message", [
-    (2, "the enclosure needs at least 3 sides, got 2"),
-    (0, "the enclosure needs at least 3 sides, got 0"),
-    (-10**20, "the enclosure needs at least 3 sides, got -100000000000000000000"),
-    (1001, "the enclosure can have at most 1000 sides, got 1001"),
-    (2**31, "the enclosure can have at most 1000 sides, got 2147483648"),
+    (2, "enclosure_sides must be at least 3, got 2"),
+    (0, "enclosure_sides must be at least 3, got 0"),
+    (-10**20, "enclosure_sides must be at least 3, got -100000000000000000000"),
+    (1001, "enclosure_sides must be at most 1000, got 1001"),
+    (2**31, "enclosure_sides must be at most 1000, got 2147483648"),
 ])
 def test_enclosure_sides_out_of_range(sides, message):
-    for method in ("barycentric", "linear"):
-        with pytest.raises(stickmorph.InvalidArgumentError) as error:
-            stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, enclosure_sides=sides, method=method)
-        assert str(error.value) == message
+    with pytest.raises(stickmorph.InvalidArgumentError) as error:
+        stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, enclosure_sides=sides)
+    assert str(error.value) == message
     with pytest.raises(stickmorph.InvalidArgumentError) as error:
         stickmorph.triangulate_figures(A_SOURCE, A_TARGET, A_EDGES, enclosure_sides=sides)
     assert str(error.value) == message
+
+
+LINEAR_IGNORES = [("steiner", "aronov"), ("steiner", "improved"), ("weights", "uniform"),
+                  ("enclosure_sides", 6), ("enclosure_sides", 2), ("verify", True), ("verify", False)]
+
+
+@pytest.mark.parametrize("keyword, value", LINEAR_IGNORES)
+def test_linear_refuses_what_it_would_ignore(keyword, value):
+    # As `stickmorph morph --method linear --steiner ...` does: even a default
+    # value, once asked for, would silently mean nothing.
+    with pytest.raises(stickmorph.InvalidArgumentError) as error:
+        stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, method="linear", **{keyword: value})
+    assert str(error.value) == (f"{keyword} has no effect with method='linear' "
+                                "(the straight-line morph uses no triangulation)")
+
+
+@pytest.mark.parametrize("keyword, value", [("steiner", "sg2001"), ("weights", "uniform"),
+                                            ("enclosure_sides", 7), ("verify", False)])
+def test_barycentric_takes_what_linear_refuses(keyword, value):
+    result = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=3, **{keyword: value})
+    assert result["frames"].shape == (3, len(A_SOURCE), 2)
+
+
+def test_none_means_not_given():
+    given = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=4, steiner="improved", weights="mvc",
+                             enclosure_sides=6, verify=True)
+    defaults = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=4, steiner=None, weights=None,
+                                enclosure_sides=None, verify=None)
+    assert np.array_equal(given["frames"], defaults["frames"])
+    assert {k: defaults["stats"][k] for k in ("steiner_method", "enclosure_sides", "weights", "verified")} == \
+        {"steiner_method": "improved", "enclosure_sides": 6, "weights": "mvc", "verified": True}
+    linear = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=4, method="linear", steiner=None,
+                              weights=None, enclosure_sides=None, verify=None)
+    assert linear["triangulation"] is None
+
+
+def test_limits_and_option_names_are_exported():
+    assert stickmorph.limits["min_frames"] == 2 and stickmorph.limits["max_frames"] == 100000
+    assert stickmorph.limits["max_enclosure_sides"] == 1000
+    assert stickmorph.limits["min_enclosure_sides"] == 3
+    assert stickmorph.limits["default_frames"] == 50 and stickmorph.limits["default_enclosure_sides"] == 6
+    assert stickmorph.limits["max_smoothing_rounds"] == 1000
+    assert stickmorph.OPTION_NAMES["enclosure_sides"] == "--enclosure-sides"
+    assert stickmorph.OPTION_NAMES["verify"] == "--no-verify"
+    assert stickmorph.OPTION_NAMES["smoothing_rounds"] == ""
+    assert stickmorph.METHOD_NAMES == ("barycentric", "linear")
+    # The docstrings quote them from the same table.
+    limits = stickmorph.limits
+    assert f"{limits['min_frames']} to {limits['max_frames']}" in stickmorph.morph.__doc__
+    for function in (stickmorph.morph, stickmorph.triangulate_figures):
+        assert f"{limits['min_enclosure_sides']} to {limits['max_enclosure_sides']}" in function.__doc__
+    assert f"({limits['min_smoothing_rounds']} to {limits['max_smoothing_rounds']})" in \
+        stickmorph.compatible_triangulation.__doc__
+    for function in (stickmorph.morph, stickmorph.triangulate_figures, stickmorph.compatible_triangulation):
+        assert "{min_" not in function.__doc__ and "{max_" not in function.__doc__
+    # The limits are the ones enforced.
+    top = stickmorph.limits["max_enclosure_sides"]
+    with pytest.raises(stickmorph.InvalidArgumentError, match=f"at most {top}"):
+        stickmorph.triangulate_figures(A_SOURCE, A_TARGET, A_EDGES, enclosure_sides=top + 1)
 
 
 def test_enclosure_sides_not_an_integer():
@@ -633,12 +697,17 @@ def test_incompatible_figures(name, data_dir):
     source = stickmorph.load_figure(folder / f"{name}.source.json")
     target = stickmorph.load_figure(folder / f"{name}.target.json")
     arguments = (source["vertices"], target["vertices"], source["edges"])
+    report = stickmorph.check_compatibility(*arguments, target_edges=target["edges"])
     for method in ("barycentric", "linear"):
         with pytest.raises(stickmorph.IncompatibleFiguresError) as error:
             stickmorph.morph(*arguments, target_edges=target["edges"], method=method)
-        assert str(error.value)
-    with pytest.raises(stickmorph.IncompatibleFiguresError):
+        # The report travels with the exception: no message parsing needed.
+        assert str(error.value) == f"incompatible figures: {report.reason}"
+        assert error.value.kind == report.kind != "none"
+        assert error.value.vertices == report.vertices
+    with pytest.raises(stickmorph.IncompatibleFiguresError) as error:
         stickmorph.triangulate_figures(*arguments, target_edges=target["edges"])
+    assert (error.value.kind, error.value.vertices) == (report.kind, report.vertices)
 
 
 def test_incompatible_is_not_invalid():
@@ -660,10 +729,12 @@ def test_invalid_source_or_target(function):
         call(CROSSING, valid, CROSSING_EDGES)
     assert str(error.value).startswith("source: ")
     assert error.value.defect == "crossing_edges" and error.value.edges == [0, 1]
+    assert error.value.role == "source"
     with pytest.raises(stickmorph.InvalidFigureError) as error:
         call(valid, CROSSING, CROSSING_EDGES)
     assert str(error.value).startswith("target: ")
     assert error.value.defect == "crossing_edges"
+    assert error.value.role == "target"
     # Both bad: the source is named.
     with pytest.raises(stickmorph.InvalidFigureError, match="^source: "):
         call(CROSSING, CROSSING, CROSSING_EDGES)
@@ -671,6 +742,19 @@ def test_invalid_source_or_target(function):
     with pytest.raises(stickmorph.InvalidFigureError, match="^target: ") as error:
         call(valid, valid, [[0, 1], [1, 2], [2, 3]], target_edges=[[0, 1], [1, 2], [2, 2]])
     assert error.value.defect == "self_loop"
+
+
+def test_error_attributes_are_none_on_the_classes():
+    for attribute in ("defect", "vertices", "edges", "role"):
+        assert getattr(stickmorph.InvalidFigureError, attribute) is None
+    for attribute in ("kind", "vertices"):
+        assert getattr(stickmorph.IncompatibleFiguresError, attribute) is None
+
+
+def test_a_figure_on_its_own_has_no_role():
+    with pytest.raises(stickmorph.InvalidFigureError) as error:
+        stickmorph.validate(CROSSING, CROSSING_EDGES)
+    assert error.value.role is None
 
 
 def test_invalid_source_with_linear_method():

@@ -426,6 +426,32 @@ def test_crossing_polygon(role):
     assert info.value.defect == "crossing_edges"
 
 
+# Each way a corner sequence can fail to be a weakly simple counter-clockwise
+# polygon has its own defect, and the role says which polygon of the pair.
+@pytest.mark.parametrize("polygon, defect", [
+    (SQUARE[::-1], "clockwise_corners"),
+    ([[0.0, 0.0], [4.0, 4.0], [4.0, 0.0], [0.0, 4.0]], "crossing_edges"),
+    ([[0.0, 0.0], [2.0, 0.0], [2.0, 0.0], [0.0, 2.0]], "coincident_corners"),
+])
+@pytest.mark.parametrize("role", ["source", "target"])
+def test_polygon_defects_are_told_apart(polygon, defect, role):
+    arguments = (polygon, SQUARE) if role == "source" else (SQUARE, polygon)
+    with pytest.raises(stickmorph.InvalidFigureError, match=f"in the {role}") as info:
+        stickmorph.compatible_triangulation(*arguments)
+    assert info.value.defect == defect
+    assert info.value.role == role
+
+
+# Defects of the corner sequence itself, shared by both polygons: the source
+# is named first.
+@pytest.mark.parametrize("corners, defect", [([0, 1], "too_few_corners"),
+                                             ([0, 1, 1, 2, 3], "coincident_corners")])
+def test_corner_sequence_defects(corners, defect):
+    with pytest.raises(stickmorph.InvalidFigureError, match="in the source") as info:
+        stickmorph.compatible_triangulation(SQUARE, SQUARE, corners=corners)
+    assert (info.value.defect, info.value.role) == (defect, "source")
+
+
 def test_crossing_comb():
     crossing = COMB[:5] + [[9.0, -1.0]] + COMB[6:]
     with pytest.raises(stickmorph.InvalidFigureError, match="in the target.*cross"):

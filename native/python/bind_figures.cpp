@@ -1,0 +1,235 @@
+// Figures one at a time and pairs of them: validation, file reading,
+// rotation systems, Algorithm 1's decomposition and compatibility.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "bindings.h"
+#include "conversions.h"
+#include "stickmorph/compatibility.h"
+#include "stickmorph/decomposition.h"
+#include "stickmorph/errors.h"
+#include "stickmorph/figure_io.h"
+
+namespace stickmorph::python {
+
+void bind_figures(py::module_& m) {
+  py::class_<sm::CompatibilityReport>(m, "CompatibilityReport",
+                                      "The answer of check_compatibility. True iff compatible.")
+      .def_property_readonly("compatible", &sm::CompatibilityReport::compatible,
+                             "True iff the two figures are compatible.")
+      .def_property_readonly(
+          "kind",
+          [](const sm::CompatibilityReport& r) { return incompatibility_name(r.kind); },
+          "Why not: 'none', 'vertex_count_differs', 'edge_set_differs', 'mirror_image', "
+          "'rotation_differs' or 'exterior_differs'.")
+      .def_property_readonly(
+          "reason", [](const sm::CompatibilityReport& r) { return r.reason; },
+          "Explanation naming vertices; empty when compatible.")
+      .def_property_readonly(
+          "vertices", [](const sm::CompatibilityReport& r) { return to_list(r.vertices); },
+          "List of the vertex indices named in the reason.")
+      .def("__bool__", &sm::CompatibilityReport::compatible)
+      .def("__repr__", [](const sm::CompatibilityReport& r) {
+        if (r.compatible()) return std::string("CompatibilityReport(compatible=True)");
+        return "CompatibilityReport(compatible=False, kind='" +
+               std::string(incompatibility_name(r.kind)) +
+               "', vertices=" + py::repr(to_list(r.vertices)).cast<std::string>() +
+               ", reason=" + py::repr(py::str(r.reason)).cast<std::string>() + ")";
+      });
+
+  m.def(
+      "validate",
+      [](const py::object& vertices, const py::object& edges) { make_figure(vertices, edges, "vertices", "edges"); },
+      py::arg("vertices"), py::arg("edges"),
+      R"doc(Checks that a figure is a valid stick figure.
+
+Args:
+  vertices: #V by 2 float64 array-like of coordinates.
+  edges: #E by 2 integer array-like of vertex indices ([] for a single vertex).
+
+Returns:
+  None.
+
+Raises:
+  InvalidFigureError: the figure is not a connected straight-line plane graph;
+    its `defect`, `vertices` and `edges` say what and where.
+  InvalidArgumentError: an array of the wrong shape or type.)doc");
+
+  m.def(
+      "load_figure",
+      [](const py::object& path) {
+        const py::module_ os = py::module_::import("os");
+        if (!py::isinstance<py::str>(path) && !py::isinstance<py::bytes>(path) &&
+            !py::isinstance(path, os.attr("PathLike")))
+          throw sm::InvalidArgumentError("path must be a str, bytes or os.PathLike, got " +
+                                         py::str(py::type::of(path).attr("__name__")).cast<std::string>());
+        // os.fsencode gives the bytes the OS uses for str (surrogate escapes
+        // included), bytes and os.PathLike alike.
+        py::object encoded;
+        try {
+          encoded = os.attr("fsencode")(path);
+        } catch (py::error_already_set& e) {
+          // A PathLike whose __fspath__ returns something else.
+          throw sm::InvalidArgumentError("path cannot be used as a file name: " +
+                                         py::str(e.value()).cast<std::string>());
+        }
+        const std::string file = encoded.cast<std::string>();
+        // The C library stops at a NUL byte, so "a\0b" would open "a".
+        if (file.find('\0') != std::string::npos)
+          throw sm::InvalidArgumentError("path contains a NUL byte");
+        if (file.empty()) throw sm::InvalidArgumentError("path is an empty file name");
+        sm::StickFigure figure;
+        {
+          py::gil_scoped_release release;
+          figure = sm::read_figure_file(file);
+        }
+        const auto n = static_cast<py::ssize_t>(figure.vertices.size());
+        const auto e = static_cast<py::ssize_t>(figure.edges.size());
+        py::array_t<double> vertices({n, py::ssize_t{2}});
+        auto v = vertices.mutable_unchecked<2>();
+        for (py::ssize_t i = 0; i < n; ++i) {
+          v(i, 0) = figure.vertices[i][0];
+          v(i, 1) = figure.vertices[i][1];
+        }
+        py::array_t<std::int64_t> edges({e, py::ssize_t{2}});
+        auto w = edges.mutable_unchecked<2>();
+        for (py::ssize_t i = 0; i < e; ++i) {
+          w(i, 0) = figure.edges[i][0];
+          w(i, 1) = figure.edges[i][1];
+        }
+        py::dict result;
+        result["name"] = to_str(figure.name);
+        result["vertices"] = vertices;
+        result["edges"] = edges;
+        return result;
+      },
+      py::arg("path"),
+      R"doc(Reads and validates a stick figure file (JSON, see docs/CLI.md).
+
+Args:
+  path: str or os.PathLike.
+
+Returns:
+  dict with "name" (str), "vertices" (#V by 2 float64 ndarray) and
+  "edges" (#E by 2 int64 ndarray), in file order.
+
+Raises:
+  FileError: the file cannot be read (an OSError with errno and filename:
+    FigureFileNotFoundError is a FileNotFoundError, and so on).
+  JsonError: malformed JSON or a field of the wrong shape.
+  InvalidFigureError: the file describes an invalid figure.)doc");
+
+  m.def(
+      "rotation_system",
+      [](const py::object& vertices, const py::object& edges) {
+        const sm::StickFigure figure = make_figure(vertices, edges, "vertices", "edges");
+        sm::RotationSystem rotation;
+        {
+          py::gil_scoped_release release;
+          rotation = sm::rotation_system(figure);
+        }
+        py::list result;
+        for (const std::vector<int>& darts : rotation.outgoing_ccw) {
+          std::vector<int> neighbours;
+          neighbours.reserve(darts.size());
+          for (int dart : darts) neighbours.push_back(sm::dart_head(figure, dart));
+          result.append(to_int64_array(neighbours));
+        }
+        return result;
+      },
+      py::arg("vertices"), py::arg("edges"),
+      R"doc(The cyclic order of edges around each vertex.
+
+Args:
+  vertices: #V by 2 float64 array-like of coordinates.
+  edges: #E by 2 integer array-like of vertex indices.
+
+Returns:
+  list of #V int64 ndarrays; entry v holds the neighbours of vertex v in
+  counter-clockwise order, starting from the first direction at or after the
+  positive x axis. Decided by exact predicates.
+
+Raises:
+  InvalidFigureError, InvalidArgumentError: as validate().)doc");
+
+  m.def(
+      "decompose",
+      [](const py::object& vertices, const py::object& edges) {
+        const sm::StickFigure figure = make_figure(vertices, edges, "vertices", "edges");
+        sm::Decomposition decomposition;
+        {
+          py::gil_scoped_release release;
+          decomposition = sm::decompose(figure);
+        }
+        py::list result;
+        for (const sm::CyclicSequence& sequence : decomposition.sequences) {
+          py::dict entry;
+          entry["vertices"] = to_int64_array(sequence.vertices);
+          entry["exterior"] = sequence.exterior;
+          entry["angle_sum"] = sequence.angle_sum;
+          result.append(entry);
+        }
+        return result;
+      },
+      py::arg("vertices"), py::arg("edges"),
+      R"doc(Decomposes a figure into cyclic sequences (paper, Algorithm 1).
+
+Args:
+  vertices: #V by 2 float64 array-like of coordinates.
+  edges: #E by 2 integer array-like of vertex indices.
+
+Returns:
+  list of dicts, one per cyclic sequence in the order Algorithm 1 finds them:
+    "vertices"  int64 ndarray of the n vertices along the sequence; a vertex
+                repeats where the walk passes it more than once
+    "exterior"  True for the one sequence bounding the unbounded region
+    "angle_sum" float, sum of the n polygon angles: pi*(n-2) for an
+                interior sequence, pi*(n+2) for the exterior one
+  Interior sequences run counter-clockwise, the exterior one clockwise. A
+  single vertex without edges gives one exterior sequence [0], angle_sum 0.
+
+Raises:
+  InvalidFigureError, InvalidArgumentError: as validate().)doc");
+
+  m.def(
+      "check_compatibility",
+      [](const py::object& source_vertices, const py::object& target_vertices,
+         const py::object& edges, const py::object& target_edges) {
+        const auto figures = make_figure_pair(source_vertices, target_vertices, edges, target_edges,
+                                              "source_vertices", "target_vertices");
+        py::gil_scoped_release release;
+        return sm::check_compatibility(figures.first, figures.second);
+      },
+      py::arg("source_vertices"), py::arg("target_vertices"), py::arg("edges"),
+      py::arg("target_edges") = py::none(),
+      R"doc(Decides whether two corresponding figures are compatible (paper, 2.1).
+
+Vertex i of the source corresponds to vertex i of the target. Compatible
+figures have the same cyclic sequences with the same orientation and the same
+exterior sequence.
+
+Args:
+  source_vertices: #V by 2 float64 array-like, source coordinates.
+  target_vertices: #V by 2 float64 array-like, target coordinates.
+  edges: #E by 2 integer array-like of vertex indices of the source (and of
+    the target unless target_edges is given).
+  target_edges: optional #E by 2 integer array-like, the target's edge list;
+    order and direction may differ from edges.
+
+Returns:
+  CompatibilityReport: truthy iff compatible; `kind`, `reason` and `vertices`
+  say why not.
+
+Raises:
+  InvalidFigureError: the source or the target is invalid (the message
+    starts with "source: " or "target: ", and its role attribute says
+    which).
+  InvalidArgumentError: an array of the wrong shape or type.)doc");
+
+}
+
+}  // namespace stickmorph::python

@@ -1,0 +1,116 @@
+// Algorithm 3 of Surazhsky & Gotsman 2001 ("MorphStickFigures"), end to end.
+//
+//   1. decompose both figures into cyclic sequences and check compatibility
+//   2. compatibly triangulate every pair of interior faces
+//   3. enclose both in one convex polygon, cut and triangulate the annulus
+//   4. morph the triangulation by Floater & Gotsman's convex combinations
+//   5. discard the helper vertices (enclosure and Steiner), keep the figure
+//
+// Steps 1-3 are triangulate_figures, step 4 morph_triangulation; this entry
+// checks the options once, runs them in order, times them and does step 5,
+// so that the CLI, the Python module, the tests, the fuzzer and the
+// benchmarks all run the same pipeline. The straight-line baseline of the
+// paper's Figure 8d (method Linear) runs through the same entry.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "stickmorph/argument_limits.h"
+#include "stickmorph/compatible_triangulation.h"
+#include "stickmorph/figure_triangulation.h"
+#include "stickmorph/morph.h"
+#include "stickmorph/stick_figure.h"
+
+namespace stickmorph {
+
+enum class MorphMethod {
+  Barycentric,  ///< Algorithm 3: valid frames, verified unless verify is false
+  Linear,       ///< straight lines (Figure 8d); self-intersecting frames are listed, not refused
+};
+
+/// "barycentric", "linear" -> method.
+/// @throws InvalidArgumentError naming the accepted names.
+MorphMethod parse_morph_method(const std::string& name);
+std::string morph_method_name(MorphMethod method);
+
+/// What to run. The options that only the barycentric method uses are
+/// optional: unset means the default, set means the caller asked for it, and
+/// asking for one with the linear method is refused (it would be silently
+/// ignored otherwise: a user who asked for a setting would get something else).
+struct MorphStickFiguresOptions {
+  MorphMethod method = MorphMethod::Barycentric;
+  /// N, kMinMorphFrames to kMaxMorphFrames: t_f = f / (N - 1). long long so
+  /// that an interface can hand over an out-of-range value unchanged for
+  /// the message.
+  long long frames = kDefaultMorphFrames;
+  std::optional<SteinerMethod> steiner;        ///< default SteinerMethod::Improved
+  std::optional<WeightKind> weights;           ///< default WeightKind::MeanValue
+  std::optional<long long> enclosure_sides;    ///< default kDefaultEnclosureSides
+  std::optional<bool> verify;                  ///< default true: every frame checked exactly
+  /// Also return every frame with all n+k+s triangulation nodes
+  /// (MorphStickFiguresResult::node_frames), for drawing the triangulation
+  /// under the figure or re-checking its triangles. Barycentric only; the
+  /// linear method has no helper nodes, so there it is refused too.
+  bool keep_node_frames = false;
+  /// How messages name options: as the CLI's flags or as keywords.
+  OptionSpelling spelling = OptionSpelling::Keyword;
+};
+
+/// What the run measured and counted.
+struct MorphStickFiguresStats {
+  int steiner_vertices = 0;  ///< s; 0 for linear
+  int triangles = 0;         ///< of the triangulation; 0 for linear
+  // Wall-clock milliseconds.
+  double triangulate_ms = 0;  ///< steps 1-3; 0 for linear
+  double morph_ms = 0;        ///< step 4 (linear: the interpolation and its validity check)
+  double factorize_ms = 0;    ///< part of morph_ms, see MorphStats; 0 for linear
+  double solve_ms = 0;        ///< part of morph_ms (linear: the interpolation)
+  double verify_ms = 0;       ///< part of morph_ms (linear: finding the invalid frames)
+  int refined_frames = 0;     ///< see MorphStats; 0 for linear
+  int factorizations = 0;     ///< see MorphStats; 0 for linear
+  /// Linear only: frames that are not stick figures compatible with the
+  /// source (is_frame_valid), increasing. Empty for barycentric, whose
+  /// frames are all valid when verified.
+  std::vector<int> invalid_frames;
+  /// Steps 1-3 in detail (per-stage milliseconds, faces, minimum angle);
+  /// all zero for linear.
+  FigureTriangulationStats triangulation;
+};
+
+struct MorphStickFiguresResult {
+  std::vector<double> times;  ///< N times, 0 first, 1 last
+  /// frames[f]: the figure's n vertex positions at times[f] (step 5 done);
+  /// frames[0] and frames[N-1] are exactly the source and target vertices.
+  std::vector<std::vector<Vec2>> frames;
+  /// Only with options.keep_node_frames: all n+k+s node positions per frame.
+  std::vector<std::vector<Vec2>> node_frames;
+  /// The triangulation the morph used; empty for linear.
+  std::optional<FigureTriangulation> triangulation;
+  /// The options in effect, defaults filled in (for reports such as the
+  /// CLI's stats); meaningful for barycentric.
+  FigureTriangulationOptions triangulation_options;
+  MorphOptions morph_options;
+  MorphStickFiguresStats stats;
+};
+
+/// Checks `options` without morphing: what morph_stick_figures does first.
+/// Interfaces call it before reading input files, so that a bad option is
+/// reported before a file error and before any work.
+/// @throws InvalidArgumentError: frames or enclosure_sides out of range, or
+///         an option the linear method would ignore (steiner, weights,
+///         enclosure_sides, verify, keep_node_frames).
+void check_morph_options(const MorphStickFiguresOptions& options);
+
+/// Algorithm 3 on two figures whose vertices correspond by index.
+/// @throws InvalidArgumentError (check_morph_options), IncompatibleFiguresError
+///         (with the compatibility report's kind and vertices),
+///         VerificationError (a triangulation or frame that could not be
+///         verified), as triangulate_figures and morph_triangulation do;
+///         InternalError where those would blame an argument the engine
+///         built itself.
+MorphStickFiguresResult morph_stick_figures(const StickFigure& source, const StickFigure& target,
+                                            const MorphStickFiguresOptions& options = {});
+
+}  // namespace stickmorph

@@ -1,0 +1,255 @@
+// morph_stick_figures: Algorithm 3 end to end through the engine's one entry,
+// and the option checks (argument_limits.h) every interface relies on.
+#include "catch.h"
+
+#include <cerrno>
+#include <limits>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "stickmorph/argument_limits.h"
+#include "stickmorph/compatibility.h"
+#include "stickmorph/errors.h"
+#include "stickmorph/figure_io.h"
+#include "stickmorph/figure_triangulation.h"
+#include "stickmorph/morph.h"
+#include "stickmorph/morph_stick_figures.h"
+
+using namespace stickmorph;
+
+namespace {
+
+struct Pair {
+  StickFigure source, target;
+};
+
+Pair read_pair(const std::string& folder, const std::string& name) {
+  const std::string stem = std::string(STICKMORPH_TEST_DATA) + "/pairs/" + folder + "/" + name;
+  return {read_figure_file(stem + ".source.json"), read_figure_file(stem + ".target.json")};
+}
+
+// The message of the InvalidArgumentError `options` is refused with.
+std::string refusal(const MorphStickFiguresOptions& options) {
+  try {
+    check_morph_options(options);
+  } catch (const InvalidArgumentError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("morph_stick_figures runs steps 1-5 as triangulate_figures and morph_triangulation do") {
+  const Pair pair = read_pair("compatible", "letter_a");
+  MorphStickFiguresOptions options;
+  options.frames = 7;
+  options.keep_node_frames = true;
+  const MorphStickFiguresResult result = morph_stick_figures(pair.source, pair.target, options);
+
+  // The same computation by hand: the entry may not change a single bit.
+  const FigureTriangulation triangulation = triangulate_figures(pair.source, pair.target);
+  MorphOptions morph_options;
+  morph_options.frames = 7;
+  const MorphResult by_hand = morph_triangulation(triangulation, pair.source, morph_options);
+
+  REQUIRE(result.triangulation.has_value());
+  CHECK(result.triangulation->triangles == triangulation.triangles);
+  CHECK(result.triangulation->source == triangulation.source);
+  CHECK(result.times == by_hand.times);
+  CHECK(result.node_frames == by_hand.frames);
+  const std::size_t n = pair.source.vertices.size();
+  REQUIRE(result.frames.size() == 7);
+  for (std::size_t f = 0; f < result.frames.size(); ++f) {
+    // Step 5: only the figure's vertices.
+    REQUIRE(result.frames[f].size() == n);
+    CHECK(std::vector<Vec2>(by_hand.frames[f].begin(), by_hand.frames[f].begin() + long(n)) == result.frames[f]);
+  }
+  CHECK(result.frames.front() == pair.source.vertices);
+  CHECK(result.frames.back() == pair.target.vertices);
+
+  CHECK(result.stats.steiner_vertices == triangulation.steiner_vertices);
+  CHECK(result.stats.triangles == int(triangulation.triangles.size()));
+  CHECK(result.stats.invalid_frames.empty());
+  CHECK(result.stats.triangulate_ms > 0);
+  CHECK(result.stats.morph_ms >= result.stats.solve_ms);
+  CHECK(result.stats.triangulation.interior_faces > 0);
+  CHECK(result.triangulation_options.method == SteinerMethod::Improved);
+  CHECK(result.triangulation_options.enclosure_sides == kDefaultEnclosureSides);
+  CHECK(result.morph_options.weights == WeightKind::MeanValue);
+  CHECK(result.morph_options.verify);
+}
+
+TEST_CASE("morph_stick_figures keeps node frames only when asked") {
+  const Pair pair = read_pair("compatible", "polyline");
+  MorphStickFiguresOptions options;
+  options.frames = 3;
+  CHECK(morph_stick_figures(pair.source, pair.target, options).node_frames.empty());
+}
+
+TEST_CASE("morph_stick_figures passes the chosen options on") {
+  const Pair pair = read_pair("compatible", "letter_a");
+  MorphStickFiguresOptions options;
+  options.frames = 4;
+  options.steiner = SteinerMethod::Sg2001;
+  options.weights = WeightKind::Floater;
+  options.enclosure_sides = 9;
+  options.verify = false;
+  const MorphStickFiguresResult result = morph_stick_figures(pair.source, pair.target, options);
+  REQUIRE(result.triangulation.has_value());
+  CHECK(result.triangulation->enclosure_vertices == 9);
+  CHECK(result.triangulation_options.method == SteinerMethod::Sg2001);
+  CHECK(result.morph_options.weights == WeightKind::Floater);
+  CHECK_FALSE(result.morph_options.verify);
+  CHECK(result.stats.verify_ms == 0);
+}
+
+TEST_CASE("morph_stick_figures with the linear method is linear_morph") {
+  const Pair pair = read_pair("compatible", "letter_a");
+  MorphStickFiguresOptions options;
+  options.method = MorphMethod::Linear;
+  options.frames = 9;
+  const MorphStickFiguresResult result = morph_stick_figures(pair.source, pair.target, options);
+  std::vector<int> invalid;
+  const MorphResult by_hand = linear_morph(pair.source, pair.target, 9, &invalid);
+  CHECK(result.frames == by_hand.frames);
+  CHECK(result.times == by_hand.times);
+  CHECK(result.stats.invalid_frames == invalid);
+  CHECK_FALSE(result.triangulation.has_value());
+  CHECK(result.node_frames.empty());
+  CHECK(result.stats.steiner_vertices == 0);
+  CHECK(result.stats.triangulate_ms == 0);
+}
+
+TEST_CASE("morph_stick_figures refuses incompatible figures with either method") {
+  const Pair pair = read_pair("incompatible", "mirror_image");
+  for (const MorphMethod method : {MorphMethod::Barycentric, MorphMethod::Linear}) {
+    MorphStickFiguresOptions options;
+    options.method = method;
+    options.frames = 3;
+    CHECK_THROWS_AS(morph_stick_figures(pair.source, pair.target, options), IncompatibleFiguresError);
+  }
+}
+
+TEST_CASE("check_morph_options refuses what the linear method would ignore, in the caller's spelling") {
+  MorphStickFiguresOptions linear;
+  linear.method = MorphMethod::Linear;
+  CHECK(refusal(linear).empty());
+
+  MorphStickFiguresOptions options = linear;
+  options.steiner = SteinerMethod::Aronov;
+  CHECK(refusal(options) ==
+        "steiner has no effect with method='linear' (the straight-line morph uses no triangulation)");
+  options.spelling = OptionSpelling::CommandLine;
+  CHECK(refusal(options) ==
+        "option --steiner has no effect with --method linear (the straight-line morph uses no triangulation)");
+
+  options = linear;
+  options.weights = WeightKind::Uniform;
+  CHECK(refusal(options).rfind("weights has no effect", 0) == 0);
+  options = linear;
+  options.enclosure_sides = 6;  // even the default, once asked for
+  CHECK(refusal(options).rfind("enclosure_sides has no effect", 0) == 0);
+  options = linear;
+  options.verify = true;
+  CHECK(refusal(options).rfind("verify has no effect", 0) == 0);
+  options.spelling = OptionSpelling::CommandLine;
+  CHECK(refusal(options).rfind("option --no-verify has no effect", 0) == 0);
+  options = linear;
+  options.keep_node_frames = true;
+  CHECK(refusal(options).find("node frames do not exist") != std::string::npos);
+
+  // The barycentric method takes every one of them.
+  MorphStickFiguresOptions all;
+  all.steiner = SteinerMethod::Aronov;
+  all.weights = WeightKind::Uniform;
+  all.enclosure_sides = 6;
+  all.verify = true;
+  all.keep_node_frames = true;
+  CHECK(refusal(all).empty());
+}
+
+TEST_CASE("check_morph_options checks the counts against argument_limits.h") {
+  MorphStickFiguresOptions options;
+  options.frames = kMinMorphFrames - 1;
+  CHECK(refusal(options) == "frames must be at least 2, got 1");
+  options.spelling = OptionSpelling::CommandLine;
+  CHECK(refusal(options) == "option --frames must be at least 2, got 1");
+  options.frames = kMaxMorphFrames + 1LL;
+  CHECK(refusal(options) == "option --frames must be at most 100000, got 100001");
+  options.frames = kMaxMorphFrames;
+  CHECK(refusal(options).empty());
+
+  options.enclosure_sides = kMaxEnclosureSides + 1LL;
+  CHECK(refusal(options) == "option --enclosure-sides must be at most 1000, got 1001");
+  options.enclosure_sides = 1LL << 40;  // beyond int, reported as given
+  CHECK(refusal(options) == "option --enclosure-sides must be at most 1000, got 1099511627776");
+  options.enclosure_sides = kMinEnclosureSides;
+  CHECK(refusal(options).empty());
+}
+
+TEST_CASE("check_count quotes the value as typed when one is given") {
+  CHECK_THROWS_WITH(check_frames(std::numeric_limits<long long>::max(), OptionSpelling::Keyword,
+                                 "99999999999999999999"),
+                    "frames must be at most 100000, got 99999999999999999999");
+  CHECK_THROWS_WITH(check_smoothing_rounds(-1, OptionSpelling::Keyword), "smoothing_rounds must be at least 0, got -1");
+  CHECK(check_enclosure_sides(3, OptionSpelling::CommandLine) == 3);
+}
+
+TEST_CASE("the option-name table names every option once") {
+  std::set<int> seen;
+  std::set<std::string> keywords;
+  for (const OptionName& row : option_names()) {
+    CHECK(seen.insert(int(row.option)).second);
+    CHECK(keywords.insert(row.keyword).second);
+  }
+  CHECK(seen.size() == std::size_t(Option::SmoothingRounds) + 1);
+  CHECK(describe_option(Option::EnclosureSides, OptionSpelling::CommandLine) == "option --enclosure-sides");
+  // No CLI flag: messages fall back to the keyword.
+  CHECK(describe_option(Option::SmoothingRounds, OptionSpelling::CommandLine) == "smoothing_rounds");
+}
+
+TEST_CASE("parse_morph_method knows both methods") {
+  CHECK(parse_morph_method("linear") == MorphMethod::Linear);
+  CHECK(morph_method_name(parse_morph_method("barycentric")) == "barycentric");
+  CHECK_THROWS_WITH(parse_morph_method("spline"), "unknown morph method 'spline' (choose barycentric or linear)");
+}
+
+TEST_CASE("the pipeline's errors carry what callers need without parsing messages") {
+  SECTION("a file that cannot be read is a FileError with errno, not a JsonError") {
+    const std::string missing = std::string(STICKMORPH_TEST_DATA) + "/no_such_figure.json";
+    try {
+      read_figure_file(missing);
+      FAIL("read a missing file");
+    } catch (const FileError& e) {
+      CHECK(e.error_number() == ENOENT);
+      CHECK(e.path() == missing);
+      CHECK(std::string(e.what()) == missing + ": cannot read file: No such file or directory");
+    }
+    try {
+      read_figure_file(STICKMORPH_TEST_DATA);
+      FAIL("read a directory");
+    } catch (const FileError& e) {
+      CHECK(e.error_number() == EISDIR);
+    }
+  }
+  SECTION("incompatible figures carry the report's kind and vertices") {
+    const Pair pair = read_pair("incompatible", "junction_rotation");
+    const CompatibilityReport report = check_compatibility(pair.source, pair.target);
+    REQUIRE_FALSE(report.compatible());
+    for (const MorphMethod method : {MorphMethod::Barycentric, MorphMethod::Linear}) {
+      MorphStickFiguresOptions options;
+      options.method = method;
+      try {
+        morph_stick_figures(pair.source, pair.target, options);
+        FAIL("morphed incompatible figures");
+      } catch (const IncompatibleFiguresError& e) {
+        CHECK(e.kind() == Incompatibility::RotationDiffers);
+        CHECK(e.kind() == report.kind);
+        CHECK(e.vertices() == report.vertices);
+        CHECK(std::string(e.what()) == "incompatible figures: " + report.reason);
+      }
+    }
+  }
+}
