@@ -5,19 +5,13 @@
 #include <set>
 
 #include "stickmorph/exact_predicates.h"
+#include "stickmorph/internal/geometry.h"
 
 namespace stickmorph {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-// Unsigned angle at a between directions to b and c, in [0, pi]. Accurate
-// to a few ulps: the differences are exact or correctly rounded.
-double angle_at(const Vec2& a, const Vec2& b, const Vec2& c) {
-  const double ux = b[0] - a[0], uy = b[1] - a[1];
-  const double vx = c[0] - a[0], vy = c[1] - a[1];
-  return std::atan2(std::abs(ux * vy - uy * vx), ux * vx + uy * vy);
-}
+using internal::angle_at;  // unsigned, in [0, pi]; a few ulps: the differences are exact or correctly rounded
+using internal::kPi;
 
 // Interior angle of the polygon at corner k, in (0, 2*pi]: the
 // counter-clockwise sweep from the outgoing edge to the incoming edge.
