@@ -12,6 +12,7 @@
 #include "stickmorph/exact_predicates.h"
 #include "stickmorph/internal/annulus_cut.h"
 #include "stickmorph/internal/geometry.h"
+#include "stickmorph/internal/triangle_adjacency.h"
 #include "stickmorph/verification.h"
 
 namespace stickmorph {
@@ -210,12 +211,10 @@ void verify_figure_triangulation(const FigureTriangulation& tri, const StickFigu
   }
   verify_compatible_triangulation(pair, as_polygon, "triangulation");
   // The figure is embedded: each of its edges is a triangulation edge.
-  std::set<std::pair<int, int>> edges;
-  for (const auto& t : tri.triangles)
-    for (int j = 0; j < 3; ++j) edges.emplace(std::min(t[j], t[(j + 1) % 3]), std::max(t[j], t[(j + 1) % 3]));
+  const internal::TriangleAdjacency adjacency(total, tri.triangles);
   for (std::size_t e = 0; e < source.edges.size(); ++e) {
     const Edge& edge = source.edges[e];
-    if (!edges.count({std::min(edge[0], edge[1]), std::max(edge[0], edge[1])}))
+    if (adjacency.left_of(edge[0], edge[1]) < 0 && adjacency.left_of(edge[1], edge[0]) < 0)
       throw VerificationError("triangulation: figure edge " + describe_edge(source, int(e)) +
                               " is not an edge of the triangulation");
   }

@@ -6,6 +6,7 @@
 
 #include "stickmorph/exact_predicates.h"
 #include "stickmorph/internal/geometry.h"
+#include "stickmorph/internal/triangle_adjacency.h"
 
 namespace stickmorph::internal {
 
@@ -14,11 +15,7 @@ bool positive(const std::vector<Vec2>& pos, const Triangle& t) {
 }
 
 std::vector<std::vector<int>> triangles_around(const CompatibleMesh& mesh) {
-  std::vector<std::vector<int>> around(mesh.source.size());
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    if (mesh.alive[t])
-      for (int v : mesh.triangles[t]) around[v].push_back(int(t));
-  return around;
+  return TriangleAdjacency(int(mesh.source.size()), mesh.triangles, mesh.alive).stars();
 }
 
 // Link of an interior node: its neighbours in counter-clockwise order.

@@ -9,6 +9,8 @@
 
 #include "stickmorph/errors.h"
 #include "stickmorph/exact_predicates.h"
+#include "stickmorph/internal/disk_topology.h"
+#include "stickmorph/internal/triangle_adjacency.h"
 
 namespace stickmorph::internal {
 
@@ -52,89 +54,48 @@ Topology build_topology(const FigureTriangulation& tri) {
                   (side ? "target" : "source"));
     }
 
-  // Every directed side of a triangle once: two triangles on the same side
-  // of an edge would overlap.
-  std::unordered_map<std::int64_t, int> side_of;
-  side_of.reserve(tri.triangles.size() * 3);
-  auto key = [N](int a, int b) { return std::int64_t(a) * N + b; };
   for (int t = 0; t < int(tri.triangles.size()); ++t) {
     const auto& tr = tri.triangles[t];
     for (int c = 0; c < 3; ++c)
       if (tr[c] < 0 || tr[c] >= N) malformed(triangle_text(tri, t) + " refers to a node out of range");
     if (tr[0] == tr[1] || tr[1] == tr[2] || tr[2] == tr[0]) malformed(triangle_text(tri, t) + " repeats a node");
-    for (int c = 0; c < 3; ++c) {
-      const auto [it, fresh] = side_of.emplace(key(tr[c], tr[(c + 1) % 3]), t);
-      if (!fresh)
-        malformed("the side " + std::to_string(tr[c]) + "->" + std::to_string(tr[(c + 1) % 3]) + " belongs to " +
-                  triangle_text(tri, it->second) + " and " + triangle_text(tri, t) + " (they overlap)");
-    }
-  }
-  // The boundary is the enclosure, counter-clockwise: each enclosure side
-  // has a triangle on its left and none on its right; every other side has
-  // triangles on both.
-  for (int i = 0; i < k; ++i) {
-    const int a = n + i, b = n + (i + 1) % k;
-    if (!side_of.count(key(a, b)))
-      malformed("the enclosure side " + std::to_string(a) + "->" + std::to_string(b) +
-                " is not a side of any triangle");
-    if (side_of.count(key(b, a)))
-      malformed("a triangle lies outside the enclosure side " + std::to_string(a) + "-" + std::to_string(b));
-  }
-  for (const auto& [edge_key, t] : side_of) {
-    const int a = int(edge_key / N), b = int(edge_key % N);
-    const bool enclosure_side = is_enclosure(tri, a) && is_enclosure(tri, b) && (b - n) == (a - n + 1) % k;
-    if (!enclosure_side && !side_of.count(key(b, a)))
-      malformed("the edge " + std::to_string(a) + "-" + std::to_string(b) + " borders only " +
-                triangle_text(tri, t) + " but is not an enclosure side (a hole or a second boundary)");
   }
 
-  // Fans: at node v, triangle (v, b, c) leads from neighbour b to c
-  // counter-clockwise.
-  std::vector<std::vector<std::pair<int, int>>> turns(N);
-  for (const auto& tr : tri.triangles)
-    for (int c = 0; c < 3; ++c) turns[tr[c]].emplace_back(tr[(c + 1) % 3], tr[(c + 2) % 3]);
-
+  // The boundary is the enclosure, counter-clockwise (disk_topology.h).
+  std::vector<int> enclosure(k);
+  for (int i = 0; i < k; ++i) enclosure[i] = n + i;
+  const TriangleAdjacency adjacency(N, tri.triangles);
   Topology topo;
   topo.nodes = N;
-  topo.ring.assign(N, {});
-  topo.unknown.assign(N, -1);
-  for (int v = 0; v < N; ++v) {
-    if (turns[v].empty()) malformed(node_text(tri, v) + " is in no triangle");
-    std::unordered_map<int, int> next;
-    for (const auto& [b, c] : turns[v]) next.emplace(b, c);
-    if (is_enclosure(tri, v)) {
-      // An open fan from the next enclosure vertex to the previous one.
-      const int i = v - n;
-      int at = n + (i + 1) % k;
-      const int last = n + (i + k - 1) % k;
-      std::size_t steps = 0;
-      while (at != last && steps <= turns[v].size()) {
-        auto it = next.find(at);
-        if (it == next.end()) break;
-        at = it->second;
-        ++steps;
-      }
-      if (at != last || steps != turns[v].size())
-        malformed("the triangles around " + node_text(tri, v) + " do not form one fan (the disk is pinched there)");
-      continue;
-    }
-    std::vector<int> ring{turns[v].front().first};
-    for (std::size_t step = 0; step < turns[v].size(); ++step) {
-      auto it = next.find(ring.back());
-      if (it == next.end()) malformed("the triangles around " + node_text(tri, v) + " leave a gap");
-      ring.push_back(it->second);
-    }
-    // turns[v].size() steps must close the cycle exactly then, not before.
-    ring.pop_back();
-    const bool closed = next.at(ring.back()) == ring.front();
-    std::vector<int> sorted = ring;
-    std::sort(sorted.begin(), sorted.end());
-    if (!closed || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
-      malformed("the triangles around " + node_text(tri, v) + " do not close into one fan");
-    topo.unknown[v] = int(topo.interior_nodes.size());
-    topo.interior_nodes.push_back(v);
-    topo.ring[v] = std::move(ring);
+  const DiskDefect defect = find_disk_defect(adjacency, tri.triangles, enclosure, &topo.ring);
+  const std::string a = std::to_string(defect.a), b = std::to_string(defect.b);
+  switch (defect.kind) {
+    case DiskDefect::Kind::None: break;
+    case DiskDefect::Kind::RepeatedSide:
+      // Two triangles on the same side of an edge overlap.
+      malformed("the side " + a + "->" + b + " belongs to " + triangle_text(tri, defect.triangle) + " and " +
+                triangle_text(tri, defect.other_triangle) + " (they overlap)");
+    case DiskDefect::Kind::BoundarySideMissing:
+      malformed("the enclosure side " + a + "->" + b + " is not a side of any triangle");
+    case DiskDefect::Kind::OutsideBoundary:
+      malformed("a triangle lies outside the enclosure side " + a + "-" + b);
+    case DiskDefect::Kind::SideBordersNothing:
+      malformed("the edge " + a + "-" + b + " borders only " + triangle_text(tri, defect.triangle) +
+                " but is not an enclosure side (a hole or a second boundary)");
+    case DiskDefect::Kind::NodeInNoTriangle: malformed(node_text(tri, defect.a) + " is in no triangle");
+    case DiskDefect::Kind::BoundaryFanBroken:
+      malformed("the triangles around " + node_text(tri, defect.a) + " do not form one fan (the disk is pinched there)");
+    case DiskDefect::Kind::InteriorFanGap:
+      malformed("the triangles around " + node_text(tri, defect.a) + " leave a gap");
+    case DiskDefect::Kind::InteriorFanNotClosed:
+      malformed("the triangles around " + node_text(tri, defect.a) + " do not close into one fan");
   }
+  topo.unknown.assign(N, -1);
+  for (int v = 0; v < N; ++v)
+    if (!is_enclosure(tri, v)) {
+      topo.unknown[v] = int(topo.interior_nodes.size());
+      topo.interior_nodes.push_back(v);
+    }
   return topo;
 }
 

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "stickmorph/exact_predicates.h"
+#include "stickmorph/internal/triangle_adjacency.h"
 
 namespace stickmorph::internal {
 
@@ -47,9 +48,8 @@ bool untangle(std::vector<Vec2>& pos, const std::vector<Triangle>& triangles, in
   // The usual case, every attempt of every spiderweb: nothing to repair, so
   // no stars to build (10^5 nodes in large exterior faces).
   if (std::all_of(triangles.begin(), triangles.end(), is_positive)) return true;
-  std::vector<std::vector<int>> star_of(pos.size());
-  for (std::size_t i = 0; i < triangles.size(); ++i)
-    for (int node : triangles[i]) star_of[node].push_back(int(i));
+  const TriangleAdjacency adjacency(int(pos.size()), triangles);
+  const std::vector<std::vector<int>>& star_of = adjacency.stars();
   auto step = [](double x, int ulps) {
     for (; ulps > 0; --ulps) x = std::nextafter(x, std::numeric_limits<double>::infinity());
     for (; ulps < 0; ++ulps) x = std::nextafter(x, -std::numeric_limits<double>::infinity());

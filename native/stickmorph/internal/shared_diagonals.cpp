@@ -8,6 +8,7 @@
 
 #include "stickmorph/exact_predicates.h"
 #include "stickmorph/internal/geometry.h"
+#include "stickmorph/internal/triangle_adjacency.h"
 
 namespace stickmorph::internal {
 
@@ -73,9 +74,9 @@ std::set<std::pair<int, int>> common_diagonals(const PolygonPair& pair, const st
 
 std::vector<std::vector<int>> pieces_of(const std::vector<std::array<int, 3>>& triangles,
                                         const std::set<std::pair<int, int>>& cuts) {
-  std::map<std::pair<int, int>, int> owner;  // directed side -> triangle
-  for (std::size_t t = 0; t < triangles.size(); ++t)
-    for (int j = 0; j < 3; ++j) owner[{triangles[t][j], triangles[t][(j + 1) % 3]}] = int(t);
+  int corners = 0;
+  for (const auto& t : triangles) corners = std::max({corners, t[0] + 1, t[1] + 1, t[2] + 1});
+  const TriangleAdjacency adjacency(corners, triangles);
   auto is_cut = [&](int a, int b) { return cuts.count({std::min(a, b), std::max(a, b)}) > 0; };
   // Components of triangles joined across uncut diagonals.
   std::vector<int> component(triangles.size(), -1);
@@ -90,10 +91,10 @@ std::vector<std::vector<int>> pieces_of(const std::vector<std::array<int, 3>>& t
       for (int j = 0; j < 3; ++j) {
         const int a = triangles[t][j], b = triangles[t][(j + 1) % 3];
         if (is_cut(a, b)) continue;
-        auto it = owner.find({b, a});
-        if (it != owner.end() && component[it->second] < 0) {
-          component[it->second] = count;
-          stack.push_back(it->second);
+        const int across = adjacency.left_of(b, a);
+        if (across >= 0 && component[across] < 0) {
+          component[across] = count;
+          stack.push_back(across);
         }
       }
     }
@@ -104,8 +105,8 @@ std::vector<std::vector<int>> pieces_of(const std::vector<std::array<int, 3>>& t
   for (std::size_t t = 0; t < triangles.size(); ++t)
     for (int j = 0; j < 3; ++j) {
       const int a = triangles[t][j], b = triangles[t][(j + 1) % 3];
-      auto twin = owner.find({b, a});
-      if (twin == owner.end() || component[twin->second] != component[t]) next[component[t]][a] = b;
+      const int twin = adjacency.left_of(b, a);
+      if (twin < 0 || component[twin] != component[t]) next[component[t]][a] = b;
     }
   std::vector<std::vector<int>> pieces;
   for (int c = 0; c < count; ++c) {
