@@ -15,7 +15,7 @@ bool positive(const std::vector<Vec2>& pos, const Triangle& t) {
 }
 
 std::vector<std::vector<int>> triangles_around(const CompatibleMesh& mesh) {
-  return TriangleAdjacency(int(mesh.source.size()), mesh.triangles, mesh.alive).stars();
+  return TriangleAdjacency::stars_of(int(mesh.source.size()), mesh.triangles, mesh.alive);
 }
 
 // Link of an interior node: its neighbours in counter-clockwise order.

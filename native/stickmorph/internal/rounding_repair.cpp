@@ -48,8 +48,7 @@ bool untangle(std::vector<Vec2>& pos, const std::vector<Triangle>& triangles, in
   // The usual case, every attempt of every spiderweb: nothing to repair, so
   // no stars to build (10^5 nodes in large exterior faces).
   if (std::all_of(triangles.begin(), triangles.end(), is_positive)) return true;
-  const TriangleAdjacency adjacency(int(pos.size()), triangles);
-  const std::vector<std::vector<int>>& star_of = adjacency.stars();
+  const std::vector<std::vector<int>> star_of = TriangleAdjacency::stars_of(int(pos.size()), triangles);
   auto step = [](double x, int ulps) {
     for (; ulps > 0; --ulps) x = std::nextafter(x, std::numeric_limits<double>::infinity());
     for (; ulps < 0; ++ulps) x = std::nextafter(x, -std::numeric_limits<double>::infinity());

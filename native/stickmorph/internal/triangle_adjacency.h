@@ -31,6 +31,13 @@ class TriangleAdjacency {
   /// All stars at once (for callers that then edit them).
   const std::vector<std::vector<int>>& stars() const { return around_; }
 
+  /// The stars alone, as around() would give them, without indexing the
+  /// sides: for callers that only walk stars (the rounding repair builds
+  /// them on every failed attempt of a spiderweb of 10^5 triangles, where
+  /// the side index would cost more than the repair).
+  static std::vector<std::vector<int>> stars_of(int nodes, const std::vector<Triangle>& triangles,
+                                                const std::vector<char>& alive = {});
+
   /// The triangle that has the directed side a -> b (counter-clockwise in
   /// it), or -1; where several have it (an overlap), the first.
   int left_of(int a, int b) const {
