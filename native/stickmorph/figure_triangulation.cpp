@@ -1,10 +1,8 @@
 #include "stickmorph/figure_triangulation.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
-#include <set>
 
 #include "stickmorph/argument_limits.h"
 #include "stickmorph/compatibility.h"
@@ -12,6 +10,7 @@
 #include "stickmorph/exact_predicates.h"
 #include "stickmorph/internal/annulus_cut.h"
 #include "stickmorph/internal/geometry.h"
+#include "stickmorph/internal/stopwatch.h"
 #include "stickmorph/internal/triangle_adjacency.h"
 #include "stickmorph/verification.h"
 
@@ -48,10 +47,8 @@ std::vector<Vec2> enclosure_polygon(const StickFigure& source, const StickFigure
 
 std::string face_label(int face) { return "face " + std::to_string(face); }
 
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
+using internal::Clock;
+using internal::ms_since;
 
 }  // namespace
 

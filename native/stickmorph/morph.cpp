@@ -7,7 +7,6 @@
 #include "stickmorph/morph.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <utility>
 
@@ -15,17 +14,13 @@
 #include "stickmorph/frame_verification.h"
 #include "stickmorph/internal/barycentric_weights.h"
 #include "stickmorph/internal/morph_topology.h"
+#include "stickmorph/internal/stopwatch.h"
 #include "stickmorph/morph_solver.h"
 
 namespace stickmorph {
 namespace {
 
 using namespace internal;
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 void check_frame_count(int frames) {
   if (frames < 2 || frames > kMaxMorphFrames)

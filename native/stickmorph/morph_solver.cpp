@@ -4,23 +4,18 @@
 #include <Eigen/SparseLU>
 
 #include <algorithm>
-#include <chrono>
 
 #include "stickmorph/errors.h"
 #include "stickmorph/internal/barycentric_weights.h"
 #include "stickmorph/internal/morph_topology.h"
+#include "stickmorph/internal/stopwatch.h"
 
 namespace stickmorph {
 namespace {
 
 using namespace internal;
-using Clock = std::chrono::steady_clock;
 using SparseMatrix = Eigen::SparseMatrix<double>;  // column-major, as SparseLU wants
 using LongVector = Eigen::Matrix<long double, Eigen::Dynamic, 2>;
-
-double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 /// (I - W_interior(t)) x = W_boundary(t) x_boundary for every t, with the
 /// two endpoint matrices assembled on one sparsity pattern so that a frame
