@@ -5,11 +5,12 @@
 #include <set>
 
 #include "stickmorph/exact_predicates.h"
+#include "stickmorph/internal/geometry.h"
 
 namespace stickmorph {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using internal::kPi;
 
 // Angle of the polygon at corner v between the incoming edge from u and the
 // outgoing edge to w: the clockwise sweep from direction (u - v) to direction
@@ -28,7 +29,7 @@ double corner_angle(const Vec2& u, const Vec2& v, const Vec2& w, bool same_edge)
   // from two atan2 values instead can wrap a near-0 angle to 2*pi.
   const double ax = u[0] - v[0], ay = u[1] - v[1];
   const double bx = w[0] - v[0], by = w[1] - v[1];
-  const double between = std::atan2(std::abs(ax * by - ay * bx), ax * bx + ay * by);
+  const double between = internal::angle_between(ax, ay, bx, by);
   return turn < 0 ? between : 2 * kPi - between;
 }
 

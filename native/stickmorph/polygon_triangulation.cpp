@@ -11,6 +11,7 @@
 #include <set>
 
 #include "stickmorph/exact_predicates.h"
+#include "stickmorph/internal/triangle_adjacency.h"
 
 namespace stickmorph {
 namespace {
@@ -174,17 +175,11 @@ PolygonTriangulation dual_tree_depths(const CornerPolygon& polygon,
   // Two triangles are adjacent when they share a side as corner pairs: side
   // (a -> b) in one is (b -> a) in the other. Polygon edges join consecutive
   // corners and are never shared.
-  std::map<std::pair<int, int>, std::pair<int, int>> side_owner;
+  const internal::TriangleAdjacency adjacency(polygon.size(), pt.triangles);
   for (int t = 0; t < t_count; ++t)
     for (int j = 0; j < 3; ++j) {
       const int a = pt.triangles[t][(j + 1) % 3], b = pt.triangles[t][(j + 2) % 3];
-      side_owner[{a, b}] = {t, j};
-    }
-  for (int t = 0; t < t_count; ++t)
-    for (int j = 0; j < 3; ++j) {
-      const int a = pt.triangles[t][(j + 1) % 3], b = pt.triangles[t][(j + 2) % 3];
-      auto it = side_owner.find({b, a});
-      if (it != side_owner.end()) pt.neighbour[t][j] = it->second.first;
+      pt.neighbour[t][j] = adjacency.left_of(b, a);
     }
 
   // Center: remove all leaves at once until one face (or two adjacent

@@ -5,19 +5,17 @@
 #include <set>
 
 #include "stickmorph/exact_predicates.h"
+#include "stickmorph/internal/disk_topology.h"
+#include "stickmorph/internal/triangle_adjacency.h"
+#include "stickmorph/internal/geometry.h"
 
 namespace stickmorph {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-// Unsigned angle at a between directions to b and c, in [0, pi]. Accurate
-// to a few ulps: the differences are exact or correctly rounded.
-double angle_at(const Vec2& a, const Vec2& b, const Vec2& c) {
-  const double ux = b[0] - a[0], uy = b[1] - a[1];
-  const double vx = c[0] - a[0], vy = c[1] - a[1];
-  return std::atan2(std::abs(ux * vy - uy * vx), ux * vx + uy * vy);
-}
+using internal::angle_at;  // unsigned, in [0, pi]; a few ulps: the differences are exact or correctly rounded
+using internal::kPi;
+using internal::DiskDefect;
+using internal::TriangleAdjacency;
 
 // Interior angle of the polygon at corner k, in (0, 2*pi]: the
 // counter-clockwise sweep from the outgoing edge to the incoming edge.
@@ -92,35 +90,38 @@ struct Checker {
       }
     }
 
-    // 2. A triangulated disk bounded by the polygon.
-    std::map<std::pair<int, int>, int> half_edges;
-    for (std::size_t t = 0; t < tri.triangles.size(); ++t)
-      for (int j = 0; j < 3; ++j) {
-        const int a = tri.triangles[t][j], b = tri.triangles[t][(j + 1) % 3];
-        if (!half_edges.emplace(std::make_pair(a, b), int(t)).second)
-          fail("the side from " + node_text(a) + " to " + node_text(b) + " is used by two triangles on the same side");
-      }
-    std::set<std::pair<int, int>> boundary;
-    for (int k = 0; k < corners; ++k) {
-      boundary.emplace(k, (k + 1) % corners);
-      if (!half_edges.count({k, (k + 1) % corners}))
-        fail("the polygon edge from " + node_text(k) + " to " + node_text((k + 1) % corners) + " is not a triangle side");
+    // 2. A triangulated disk bounded by the polygon (disk_topology.h): the
+    // polygon's edges each with a triangle on the inside only, every other
+    // side shared by two triangles, one fan round every node.
+    std::vector<int> boundary(corners);
+    for (int k = 0; k < corners; ++k) boundary[k] = k;
+    const TriangleAdjacency adjacency(nodes, tri.triangles);
+    const DiskDefect defect = find_disk_defect(adjacency, tri.triangles, boundary);
+    switch (defect.kind) {
+      case DiskDefect::Kind::None: break;
+      case DiskDefect::Kind::RepeatedSide:
+        fail("the side from " + node_text(defect.a) + " to " + node_text(defect.b) +
+             " is used by two triangles on the same side");
+      case DiskDefect::Kind::BoundarySideMissing:
+        fail("the polygon edge from " + node_text(defect.a) + " to " + node_text(defect.b) + " is not a triangle side");
+      case DiskDefect::Kind::OutsideBoundary:
+        fail("the polygon edge from " + node_text(defect.a) + " to " + node_text(defect.b) +
+             " has triangles on both sides");
+      case DiskDefect::Kind::SideBordersNothing:
+        fail("the side from " + node_text(defect.a) + " to " + node_text(defect.b) + " of " +
+             triangle_text(defect.triangle) + " borders nothing");
+      case DiskDefect::Kind::NodeInNoTriangle: fail(node_text(defect.a) + " is in no triangle");
+      case DiskDefect::Kind::BoundaryFanBroken:
+      case DiskDefect::Kind::InteriorFanGap:
+      case DiskDefect::Kind::InteriorFanNotClosed:
+        fail("the triangles around " + node_text(defect.a) + " do not form one fan");
     }
+    std::set<std::pair<int, int>> boundary_sides;
+    for (int k = 0; k < corners; ++k) boundary_sides.emplace(k, (k + 1) % corners);
     std::set<std::pair<int, int>> undirected;
-    for (const auto& [edge, t] : half_edges) {
-      const bool has_twin = half_edges.count({edge.second, edge.first}) > 0;
-      if (boundary.count(edge)) {
-        if (has_twin) fail("the polygon edge from " + node_text(edge.first) + " to " + node_text(edge.second) + " has triangles on both sides");
-      } else if (!has_twin) {
-        fail("the side from " + node_text(edge.first) + " to " + node_text(edge.second) + " of " + triangle_text(t) + " borders nothing");
-      }
-      undirected.emplace(std::min(edge.first, edge.second), std::max(edge.first, edge.second));
-    }
-    std::vector<int> used(nodes, 0);
     for (const auto& tr : tri.triangles)
-      for (int node : tr) used[node] = 1;
-    for (int node = 0; node < nodes; ++node)
-      if (!used[node]) fail(node_text(node) + " is in no triangle");
+      for (int j = 0; j < 3; ++j)
+        undirected.emplace(std::min(tr[j], tr[(j + 1) % 3]), std::max(tr[j], tr[(j + 1) % 3]));
     const long euler = long(nodes) - long(undirected.size()) + long(tri.triangles.size());
     if (euler != 1) fail("it is not a disk (Euler characteristic " + std::to_string(euler) + ")");
 
@@ -154,8 +155,8 @@ struct Checker {
       auto [it, inserted] = by_key.emplace(k, std::make_pair(a, b));
       if (!inserted) {
         const auto [c, d] = it->second;
-        const bool both_boundary = (boundary.count({a, b}) || boundary.count({b, a})) &&
-                                   (boundary.count({c, d}) || boundary.count({d, c}));
+        const bool both_boundary = (boundary_sides.count({a, b}) || boundary_sides.count({b, a})) &&
+                                   (boundary_sides.count({c, d}) || boundary_sides.count({d, c}));
         if (!both_boundary)
           fail("the sides " + node_text(a) + " - " + node_text(b) + " and " + node_text(c) + " - " +
                node_text(d) + " join the same two vertices (a doubled edge)");

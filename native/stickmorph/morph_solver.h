@@ -1,0 +1,85 @@
+// The morph's linear system at any time t, solved repeatedly (Algorithm 3,
+// step 4; Floater & Gotsman 1999, the paper's [8], summarised in section
+// 2.2).
+//
+// [8]: with W0 and W1 the convex-combination weights of the source and the
+// target, the triangulation at time t is the solution of
+// (I - W_interior(t)) x = W_boundary(t) x_boundary, W(t) = (1 - t) W0 + t W1,
+// the enclosure held fixed. A valid triangulation with the same
+// connectivity for every t (Tutte's theorem: W(t) is positive and
+// row-stochastic).
+//
+// A solver for repeated solves (as in geometry-central's): constructed once
+// from a triangulation and a weight kind (the weights, the two endpoint
+// matrices on one sparsity pattern, their symbolic factorization), then
+// solve(t) for any t in [0, 1], in any order, e.g. for scrubbing through a
+// morph. Consecutive solves at nearby times are cheap: each iterates on the
+// LU factorization of a nearby time (the anchor) from the previous
+// solution, and factorizes anew only when the anchor is too far.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "stickmorph/figure_triangulation.h"
+#include "stickmorph/morph.h"
+
+namespace stickmorph {
+
+/// What a MorphSolver spent, accumulated over its life.
+struct MorphSolverStats {
+  double factorize_ms = 0;  ///< numeric LU factorizations (and blending the matrix for them)
+  double solve_ms = 0;      ///< iterations on the anchor, triangular solves, long double refinement
+  int factorizations = 0;   ///< numeric LU factorizations
+};
+
+class MorphSolver {
+ public:
+  /// Computes both embeddings' weights and assembles the systems. Keeps its
+  /// own copy of `triangulation`.
+  /// @throws InvalidArgumentError as morph_triangulation does for a
+  ///         malformed or invalid triangulation.
+  MorphSolver(const FigureTriangulation& triangulation, WeightKind kind = WeightKind::MeanValue);
+  ~MorphSolver();
+  MorphSolver(MorphSolver&&) noexcept;
+  MorphSolver& operator=(MorphSolver&&) noexcept;
+
+  /// Interior (figure and Steiner) nodes: the unknowns of the system.
+  int unknowns() const;
+
+  /// All node positions at time t in [0, 1] (the enclosure's fixed). The
+  /// first call factorizes at t; later calls iterate on the latest
+  /// factorization, starting from the previous solve()'s solution, and
+  /// factorize at t when the iteration does not converge within a few steps
+  /// (and, without trying, on the call right after such a failure: times
+  /// are then too far apart for the anchor). Positions to about ten digits
+  /// of the exact solution; at t = 0 and 1 the solution, not the inputs
+  /// themselves (morph_triangulation substitutes those).
+  /// @throws InvalidArgumentError for t outside [0, 1]; VerificationError
+  ///         if the system is singular (it never is for positive weights).
+  std::vector<Vec2> solve(double t);
+
+  /// All node positions at time t from a fresh factorization at t, which
+  /// becomes the anchor. The next solve() still starts from the previous
+  /// solve()'s solution.
+  /// @throws as solve().
+  std::vector<Vec2> solve_directly(double t);
+
+  /// The last solution (of solve or solve_directly) improved by `rounds`
+  /// rounds of iterative refinement: residuals of the blended system in
+  /// long double from the endpoint values (so the blend itself is not
+  /// rounded to double), corrections from the latest factorization.
+  /// @throws InvalidArgumentError if nothing was solved yet.
+  std::vector<Vec2> refine(int rounds);
+
+  /// Whether the last solve() or solve_directly() factorized.
+  bool last_solve_factorized() const;
+
+  const MorphSolverStats& stats() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace stickmorph

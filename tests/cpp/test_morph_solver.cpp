@@ -1,0 +1,116 @@
+// MorphSolver (Algorithm 3, step 4; [8]): the morph's linear system solved
+// repeatedly, at any time and in any order.
+#include "catch.h"
+
+#include <cstdint>
+
+#include "stickmorph/errors.h"
+#include "stickmorph/morph.h"
+#include "stickmorph/morph_solver.h"
+
+using namespace stickmorph;
+
+namespace {
+
+// Figure vertices 0 and 1 (an edge) inside the square enclosure 2..5
+// (corners (+-2, +-2)), six triangles; the edge turns by 45 degrees from
+// source to target.
+FigureTriangulation edge_in_square() {
+  FigureTriangulation tri;
+  tri.figure_vertices = 2;
+  tri.enclosure_vertices = 4;
+  tri.steiner_vertices = 0;
+  tri.source = {{-0.5, 0}, {0.5, 0}, {-2, -2}, {2, -2}, {2, 2}, {-2, 2}};
+  tri.target = {{-0.5, 0.5}, {0.5, -0.5}, {-2, -2}, {2, -2}, {2, 2}, {-2, 2}};
+  tri.triangles = {{2, 3, 1}, {2, 1, 0}, {3, 4, 1}, {4, 5, 0}, {4, 0, 1}, {5, 2, 0}};
+  return tri;
+}
+
+// One figure vertex joined to the four corners of the square.
+FigureTriangulation vertex_in_square(const Vec2& source, const Vec2& target) {
+  FigureTriangulation tri;
+  tri.figure_vertices = 1;
+  tri.enclosure_vertices = 4;
+  tri.source = {source, {-2, -2}, {2, -2}, {2, 2}, {-2, 2}};
+  tri.target = {target, {-2, -2}, {2, -2}, {2, 2}, {-2, 2}};
+  tri.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 1}};
+  return tri;
+}
+
+void check_close(const std::vector<Vec2>& a, const std::vector<Vec2>& b, double margin) {
+  REQUIRE(a.size() == b.size());
+  for (std::size_t v = 0; v < a.size(); ++v)
+    for (int c = 0; c < 2; ++c) CHECK(a[v][c] == Approx(b[v][c]).margin(margin));
+}
+
+}  // namespace
+
+TEST_CASE("MorphSolver: one interior node moves on the straight line", "[morph_solver]") {
+  // With one unknown, x(t) = sum_j ((1 - t) w0_j + t w1_j) p_j, and each
+  // weight set reproduces its own embedding: x(t) = (1 - t) p0 + t p1.
+  const Vec2 p0{0.3, -0.2}, p1{-0.5, 0.9};
+  for (WeightKind kind : {WeightKind::MeanValue, WeightKind::Uniform, WeightKind::Floater}) {
+    MorphSolver solver(vertex_in_square(p0, p1), kind);
+    CHECK(solver.unknowns() == 1);
+    for (double t : {0.25, 0.0, 1.0, 0.6}) {
+      const std::vector<Vec2> x = solver.solve(t);
+      CHECK(x[0][0] == Approx((1 - t) * p0[0] + t * p1[0]).margin(1e-12));
+      CHECK(x[0][1] == Approx((1 - t) * p0[1] + t * p1[1]).margin(1e-12));
+      CHECK(x[3] == Vec2{2, 2});  // the enclosure stays put
+    }
+  }
+}
+
+TEST_CASE("MorphSolver: solve_directly is solve_morph_frame, bit for bit", "[morph_solver]") {
+  const FigureTriangulation tri = edge_in_square();
+  for (WeightKind kind : {WeightKind::MeanValue, WeightKind::Uniform, WeightKind::Floater}) {
+    MorphSolver solver(tri, kind);
+    for (double t : {0.3, 0.0, 1.0, 0.77}) {
+      CHECK(solver.solve_directly(t) == solve_morph_frame(tri, t, kind));
+      CHECK(solver.last_solve_factorized());
+    }
+    CHECK(solver.stats().factorizations == 4);
+  }
+}
+
+TEST_CASE("MorphSolver: scrubbing in any order matches the direct solves", "[morph_solver]") {
+  const FigureTriangulation tri = edge_in_square();
+  MorphSolver solver(tri);
+  // The first solve factorizes; a nearby time iterates on that anchor.
+  check_close(solver.solve(0.5), solve_morph_frame(tri, 0.5), 1e-9);
+  CHECK(solver.last_solve_factorized());
+  check_close(solver.solve(0.52), solve_morph_frame(tri, 0.52), 1e-9);
+  CHECK_FALSE(solver.last_solve_factorized());
+  CHECK(solver.stats().factorizations == 1);
+  for (double t : {0.9, 0.1, 0.11, 1.0, 0.0, 0.5})
+    check_close(solver.solve(t), solve_morph_frame(tri, t), 1e-9);
+  check_close(solver.solve(0.0), tri.source, 1e-12);
+  check_close(solver.solve(1.0), tri.target, 1e-12);
+  // Refinement of the last solution stays at it.
+  check_close(solver.refine(3), tri.target, 1e-12);
+}
+
+TEST_CASE("MorphSolver: morph_triangulation's frames are its solves in order", "[morph_solver]") {
+  // Without a frame that fails verification, the morph's interior frames
+  // are exactly the solver's solve(t_f), f = 1..N-2, in order.
+  const FigureTriangulation tri = edge_in_square();
+  StickFigure source = make_stick_figure({tri.source[0], tri.source[1]}, std::vector<std::array<std::int64_t, 2>>{{0, 1}});
+  MorphOptions options;
+  options.frames = 9;
+  const MorphResult morph = morph_triangulation(tri, source, options);
+  MorphSolver solver(tri);
+  for (int f = 1; f + 1 < options.frames; ++f) CHECK(morph.frames[f] == solver.solve(morph.times[f]));
+  CHECK(morph.stats.refined_frames == 0);
+  CHECK(morph.stats.factorizations == solver.stats().factorizations);
+}
+
+TEST_CASE("MorphSolver: refuses times outside [0, 1] and refinement before a solve", "[morph_solver]") {
+  MorphSolver solver(edge_in_square());
+  CHECK_THROWS_AS(solver.solve(1.5), InvalidArgumentError);
+  CHECK_THROWS_AS(solver.solve_directly(-0.1), InvalidArgumentError);
+  CHECK_THROWS_AS(solver.refine(1), InvalidArgumentError);
+  // A malformed triangulation is refused at construction, as by the morph.
+  FigureTriangulation broken = edge_in_square();
+  broken.triangles.pop_back();
+  CHECK_THROWS_AS(MorphSolver(broken), InvalidArgumentError);
+}

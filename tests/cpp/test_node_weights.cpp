@@ -1,0 +1,83 @@
+// internal::mean_value_weights, floater_weights, uniform_weights and
+// node_weights: one interior node as a convex combination of its
+// neighbours ([8], section 2.2 of the paper).
+#include "catch.h"
+
+#include "stickmorph/errors.h"
+#include "stickmorph/internal/barycentric_weights.h"
+
+using namespace stickmorph;
+using namespace stickmorph::internal;
+
+namespace {
+
+// Neighbours' offsets of a node at the centre of a square star.
+const std::vector<Vec2> kCross = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+
+// sum_j w_j q_j: zero when the weights reproduce the node's position.
+Vec2 reproduce(const std::vector<double>& w, const std::vector<Vec2>& q) {
+  Vec2 sum{0, 0};
+  for (std::size_t j = 0; j < q.size(); ++j) sum = {sum[0] + w[j] * q[j][0], sum[1] + w[j] * q[j][1]};
+  return sum;
+}
+
+}  // namespace
+
+TEST_CASE("all three kinds give 1/4 each at the centre of a square star", "[node_weights]") {
+  // Exactly: tan(45 deg) = 1 in mean value coordinates, the exit triangle
+  // splits evenly in Floater's, and a centroid gets 1/deg in the uniform kind.
+  const std::vector<double> quarter(4, 0.25);
+  CHECK(mean_value_weights(kCross) == quarter);
+  CHECK(floater_weights(kCross) == quarter);
+  CHECK(uniform_weights(kCross) == quarter);
+}
+
+TEST_CASE("mean value weights of a star with one far neighbour", "[node_weights]") {
+  // Right angles throughout, so tan(a/2) = 1 and w_j ~ 2 / |q_j|:
+  // 2, 2, 2, 1 over 7.
+  const std::vector<Vec2> q = {{1, 0}, {0, 1}, {-1, 0}, {0, -2}};
+  const std::vector<double> w = mean_value_weights(q);
+  CHECK(w[0] == Approx(2.0 / 7));
+  CHECK(w[1] == Approx(2.0 / 7));
+  CHECK(w[2] == Approx(2.0 / 7));
+  CHECK(w[3] == Approx(1.0 / 7));
+  const Vec2 r = reproduce(w, q);
+  CHECK(r[0] == Approx(0).margin(1e-15));
+  CHECK(r[1] == Approx(0).margin(1e-15));
+}
+
+TEST_CASE("uniform weights off the centroid stay positive and reproduce the node", "[node_weights]") {
+  // The node far towards neighbour 0: plain 1/deg would not reproduce it.
+  const std::vector<Vec2> q = {{0.1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+  const std::vector<double> w = uniform_weights(q);
+  double sum = 0;
+  for (double x : w) {
+    CHECK(x > 0);
+    sum += x;
+  }
+  CHECK(sum == Approx(1));
+  const Vec2 r = reproduce(w, q);
+  CHECK(r[0] == Approx(0).margin(1e-15));
+  CHECK(r[1] == Approx(0).margin(1e-15));
+  CHECK(w[0] > 0.25);  // the near neighbour weighs most
+}
+
+TEST_CASE("node_weights scales the offsets by a power of two and refuses a flat star", "[node_weights]") {
+  // Node 0 at the centre of the square enclosure 1..4, at very different
+  // scales: offsets are brought to about 1 before any square is taken, so
+  // tiny and huge stars get the same (finite, positive) weights.
+  for (double scale : {1.0, 1e-90, 1e90}) {
+    FigureTriangulation tri;
+    tri.figure_vertices = 1;
+    tri.enclosure_vertices = 4;
+    tri.source = {{0, 0}, {-scale, -scale}, {scale, -scale}, {scale, scale}, {-scale, scale}};
+    tri.target = tri.source;
+    tri.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 1}};
+    const Topology topo = build_topology(tri);
+    for (double w : node_weights(tri, topo, tri.source, 0, WeightKind::MeanValue)) CHECK(w == Approx(0.25));
+    // Node 0 on the side 1-2: two triangles flat, no positive weights.
+    std::vector<Vec2> flat = tri.source;
+    flat[0] = {0, -scale};
+    CHECK_THROWS_AS(node_weights(tri, topo, flat, 0, WeightKind::MeanValue), InvalidArgumentError);
+  }
+}
