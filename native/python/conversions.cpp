@@ -191,8 +191,9 @@ sm::StickFigure make_named_figure(py::handle vertices, py::handle edges,
   try {
     return make_figure(vertices, edges, vertices_name, edges_name);
   } catch (const sm::InvalidFigureError& e) {
-    // The role travels as an attribute; the message prefix stays for the
-    // add-on, which still reads it to put object names in its reports.
+    // The role travels as an attribute, and the message without the prefix
+    // as `detail` (errors.cpp); the prefix stays in the message for the
+    // readers of str(e), who have no attributes (logs, the CLI's users).
     throw sm::InvalidFigureError(e.defect(), figure + ": " + e.what(), e.vertices(), e.edges(), figure);
   }
 }

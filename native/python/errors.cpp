@@ -146,6 +146,20 @@ class FigureFileNotADirectoryError(FileError, NotADirectoryError):
   g_file_errors.emplace_back(EPERM, g_file_errors[2].second);
 }
 
+// `message` without `prefix` when it starts with it, else all of it. The
+// engine's exceptions carry a role or a reason only inside their message
+// (errors.h has no field for the rest), so the split happens here, once, and
+// Python callers (the add-on puts object names in place of the role) read
+// attributes instead of parsing the text.
+std::string without_prefix(const std::string& message, const std::string& prefix) {
+  if (!prefix.empty() && message.compare(0, prefix.size(), prefix) == 0) return message.substr(prefix.size());
+  return message;
+}
+
+// The prefix every IncompatibleFiguresError's message puts before the
+// report's reason (compatibility.cpp, figure_triangulation.cpp).
+constexpr const char* kIncompatiblePrefix = "incompatible figures: ";
+
 void translate_exception(std::exception_ptr pointer) {
   try {
     if (pointer) std::rethrow_exception(pointer);
@@ -159,6 +173,10 @@ void translate_exception(std::exception_ptr pointer) {
     instance.attr("edges") = to_list(e.edges());
     py::object role = e.role().empty() ? py::object(py::none()) : py::object(to_str(e.role()));
     instance.attr("role") = role;
+    // make_named_figure writes "<role>: <defect>"; other messages that
+    // name a role ("polygon in the source: ...") do not start with it and
+    // stay whole.
+    instance.attr("detail") = to_str(without_prefix(e.what(), e.role().empty() ? "" : e.role() + ": "));
     PyErr_SetObject(g_invalid_figure_error.ptr(), instance.ptr());
   } catch (const sm::FileError& e) {
     // An OSError like the ones open() raises: errno, strerror and filename
@@ -181,6 +199,7 @@ void translate_exception(std::exception_ptr pointer) {
     py::object instance = type(to_str(e.what()));
     instance.attr("kind") = incompatibility_name(e.kind());
     instance.attr("vertices") = to_list(e.vertices());
+    instance.attr("reason") = to_str(without_prefix(e.what(), kIncompatiblePrefix));
     PyErr_SetObject(g_incompatible_figures_error.ptr(), instance.ptr());
   } catch (const sm::VerificationError& e) {
     raise_with_message(g_verification_error, e.what());
@@ -208,8 +227,10 @@ void bind_errors(py::module_& m) {
       "  defect    what is wrong, e.g. 'crossing_edges', 'disconnected'\n"
       "  vertices  list of the vertex indices named in the message\n"
       "  edges     list of the edge indices named in the message\n"
-      "  role      'source' or 'target' when the figure is one of a pair, else None");
-  for (const char* attribute : {"defect", "vertices", "edges", "role"})
+      "  role      'source' or 'target' when the figure is one of a pair, else None\n"
+      "  detail    the message without its leading 'source: ' or 'target: ' (the whole\n"
+      "            message when it has none), to name the figure in the caller's words");
+  for (const char* attribute : {"defect", "vertices", "edges", "role", "detail"})
     py::setattr(g_invalid_figure_error, attribute, py::none());
   g_invalid_argument_error = new_exception(
       m, "InvalidArgumentError", g_stickmorph_error,
@@ -219,8 +240,11 @@ void bind_errors(py::module_& m) {
       "Two figures that an operation needs to be compatible are not.\n\n"
       "Attributes (set on instances raised by stickmorph; None on the class):\n"
       "  kind      why not, as CompatibilityReport.kind, e.g. 'mirror_image'\n"
-      "  vertices  list of the vertex indices named in the message");
-  for (const char* attribute : {"kind", "vertices"}) py::setattr(g_incompatible_figures_error, attribute, py::none());
+      "  vertices  list of the vertex indices named in the message\n"
+      "  reason    as CompatibilityReport.reason: the message without its leading\n"
+      "            'incompatible figures: '");
+  for (const char* attribute : {"kind", "vertices", "reason"})
+    py::setattr(g_incompatible_figures_error, attribute, py::none());
   g_verification_error = new_exception(
       m, "VerificationError", g_stickmorph_error,
       "A result failed exact verification and could not be repaired, so none is returned; the "
