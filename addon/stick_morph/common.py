@@ -9,11 +9,29 @@ cannot load the bundled module. core.py re-exports all of these.
 
 from dataclasses import dataclass
 
-MAX_ENGINE_FRAMES = 100000
-
-# The engine's bound on the enclosure's sides (native/stickmorph/argument_limits.h):
-# the annulus costs grow quadratically with them, so more is a hang.
-MAX_ENCLOSURE_SIDES = 1000
+# The engine's limits (native/stickmorph/argument_limits.h) as the native
+# module exports them, stickmorph.limits. A copy, because the properties
+# (preferences.py) need their min, max and default when the add-on
+# registers, and it registers without the module (dependencies.py); they and
+# their help texts take the numbers from here. Where the module is loaded
+# (core.compute_morph's range checks and messages) the add-on reads
+# stickmorph.limits itself. tests/python/test_addon_core.py asserts that this
+# table equals stickmorph.limits, so an engine limit that changes fails the
+# tests until it is changed here too.
+ENGINE_LIMITS = {
+    "min_frames": 2,
+    "max_frames": 100000,
+    "default_frames": 50,
+    "min_enclosure_sides": 3,
+    # The annulus between figure and enclosure costs time quadratic in the
+    # sides, so the engine refuses more than this rather than hang.
+    "max_enclosure_sides": 1000,
+    "default_enclosure_sides": 6,
+    "min_smoothing_rounds": 0,
+    "max_smoothing_rounds": 1000,
+    "default_smoothing_rounds": 10,
+    "max_coordinate_magnitude": 1e100,
+}
 
 
 class StickMorphError(Exception):
@@ -34,11 +52,12 @@ class BakeSettings:
     and the plane (fit_plane), where a script's values arrive too.
     """
 
-    frame_count: int = 50  # output frames, source and target included
+    # The engine's defaults: a bake and a `stickmorph morph` without options agree.
+    frame_count: int = ENGINE_LIMITS["default_frames"]  # output frames, source and target included
     frame_start: int = 1  # the frame that shows the source
     steiner: str = "improved"
     weights: str = "mvc"
-    enclosure_sides: int = 6
+    enclosure_sides: int = ENGINE_LIMITS["default_enclosure_sides"]
     plane: str = "AUTO"
     easing: str = "LINEAR"
     renderable: bool = True

@@ -25,6 +25,10 @@ OPTION_NAMES = ("frame_count", "steiner", "weights", "enclosure_sides", "plane",
 # The properties' defaults, defined once (common.BakeSettings).
 _DEFAULTS = common.BakeSettings()
 
+# The engine's ranges: registration may run without the native module, so
+# from common's copy of stickmorph.limits.
+_LIMITS = common.ENGINE_LIMITS
+
 
 def bake_settings(data):
     """The bake options of the operator (any holder of option_properties and
@@ -38,8 +42,11 @@ def option_properties():
     defaults = _DEFAULTS
     return {
         "frame_count": IntProperty(
-            name="Frames", description="Number of frames of the morph, source and target included",
-            default=defaults.frame_count, options=set(), min=2, max=common.MAX_ENGINE_FRAMES, soft_max=1000),
+            name="Frames",
+            description="Number of frames of the morph, source and target included "
+                        f"({_LIMITS['min_frames']} to {_LIMITS['max_frames']})",
+            default=defaults.frame_count, options=set(), min=_LIMITS["min_frames"], max=_LIMITS["max_frames"],
+            soft_max=1000),
         "steiner": EnumProperty(
             name="Steiner", description="How the compatible triangulation places Steiner vertices",
             items=(("improved", "Improved", "Fewest Steiner vertices (section 4.2 and further)"),
@@ -53,8 +60,11 @@ def option_properties():
                    ("floater", "Floater", "Floater's shape-preserving weights")),
             default=defaults.weights, options=set()),
         "enclosure_sides": IntProperty(
-            name="Enclosure Sides", description="Sides of the regular polygon enclosing both figures",
-            default=defaults.enclosure_sides, options=set(), min=3, max=common.MAX_ENCLOSURE_SIDES, soft_max=64),
+            name="Enclosure Sides",
+            description="Sides of the regular polygon enclosing both figures "
+                        f"({_LIMITS['min_enclosure_sides']} to {_LIMITS['max_enclosure_sides']})",
+            default=defaults.enclosure_sides, options=set(), min=_LIMITS["min_enclosure_sides"],
+            max=_LIMITS["max_enclosure_sides"], soft_max=64),
         "plane": EnumProperty(
             name="Plane", description="The plane the figures are drawn in",
             items=(("AUTO", "Auto", "The best-fit plane of both meshes"),
