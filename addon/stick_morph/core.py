@@ -33,9 +33,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import dependencies
-# The limits, the settings and the error type live in common.py, which
-# imports without numpy; they are part of core's interface too.
-from .common import MAX_ENCLOSURE_SIDES, MAX_ENGINE_FRAMES, BakeSettings, StickMorphError
+# The settings and the error type live in common.py, which imports without
+# numpy; they are part of core's interface too.
+from .common import BakeSettings, StickMorphError
 
 PLANES = ("AUTO", "XY", "XZ", "YZ")
 EASINGS = ("LINEAR", "EASE_IN_OUT")
@@ -104,6 +104,14 @@ def load_engine():
         if status.engine_error is None:  # loaded on the second try (a transient failure)
             return dependencies.import_engine(__package__)
         raise StickMorphError(status.message()) from None
+
+
+def engine_limits() -> dict:
+    """The engine's bounds by name (stickmorph.limits: "max_frames", ...).
+    From the module itself wherever it can be loaded, so that a check here
+    cannot disagree with the engine's; common.ENGINE_LIMITS is the copy for
+    registration, when the module may be missing."""
+    return load_engine().limits
 
 
 # ----------------------------------------------------------------- plane ----
@@ -242,7 +250,7 @@ def engine_frame_count(frame_count: int, easing: str) -> int:
     """How many uniform frames the engine computes for `frame_count` output frames."""
     if easing == "LINEAR":
         return frame_count
-    return min(MAX_ENGINE_FRAMES, (frame_count - 1) * EASE_OVERSAMPLING + 1)
+    return min(engine_limits()["max_frames"], (frame_count - 1) * EASE_OVERSAMPLING + 1)
 
 
 def ease_sample_indices(frame_count: int, easing: str) -> np.ndarray:
@@ -317,21 +325,24 @@ def prepare_pair(source_world, source_edges, source_faces: int, source_name: str
     return PreparedPair(source_name, target_name, fitted, source_xy, target_xy, source_h, target_h, edges, size)
 
 
-def _figure_name(message: str, source_name: str, target_name: str) -> str:
-    """The engine's 'source: ...' / 'target: ...' prefixes, as object names."""
-    if message.startswith("source: "):
-        return f"'{source_name}': " + message[len("source: "):]
-    if message.startswith("target: "):
-        return f"'{target_name}': " + message[len("target: "):]
-    return message
+def _where(vertices) -> str:
+    """' (vertex 3)', ' (vertices 0, 2)' or '' for the vertices a report names."""
+    listed = ", ".join(str(v) for v in vertices)
+    if len(vertices) == 1:
+        return f" (vertex {listed})"
+    return f" (vertices {listed})" if listed else ""
 
 
 def engine_error_message(error: Exception, source_name: str, target_name: str) -> str:
-    """A user message for an exception raised by the native module."""
+    """A user message for an exception raised by the native module, naming the
+    objects where the engine says "source" or "target" (the exceptions' role,
+    detail, kind, vertices and reason attributes; the text is not parsed)."""
     engine = load_engine()
-    text = _figure_name(str(error), source_name, target_name)
+    text = str(error)
     if isinstance(error, engine.InvalidFigureError):
-        defect = getattr(error, "defect", None) or ""
+        if error.role in ("source", "target"):
+            text = f"'{source_name if error.role == 'source' else target_name}': {error.detail}"
+        defect = error.defect or ""
         if defect == "crossing_edges":
             return f"crossing edges: {text} (mesh edge indices)"
         if defect in ("overlapping_edges", "vertex_on_edge", "coincident_vertices"):
@@ -340,7 +351,13 @@ def engine_error_message(error: Exception, source_name: str, target_name: str) -
             return f"the figure is not connected: {text}"
         return f"invalid figure: {text}"
     if isinstance(error, engine.IncompatibleFiguresError):
-        return f"incompatible figures: {text}"
+        # The morph's own compatibility check, the only one a bake runs: its
+        # exception carries the report (kind, vertices, reason).
+        where = _where(error.vertices or [])
+        if error.kind == "mirror_image":
+            return (f"incompatible figures: '{target_name}' is a mirror image of '{source_name}'"
+                    f"{where}: {error.reason}")
+        return f"incompatible figures '{source_name}' and '{target_name}'{where}: {error.reason}"
     if isinstance(error, engine.VerificationError):
         return f"the morph failed exact verification: {text}"
     if isinstance(error, engine.InternalError):
@@ -348,38 +365,25 @@ def engine_error_message(error: Exception, source_name: str, target_name: str) -
     return f"stickmorph: {text}"
 
 
-def check_pair(prepared: PreparedPair) -> None:
-    """Engine validation and compatibility, with messages naming the objects.
-    Raises StickMorphError."""
-    source_name, target_name = prepared.source_name, prepared.target_name
-    engine = load_engine()
-    try:
-        report = engine.check_compatibility(prepared.source_xy, prepared.target_xy, prepared.edges)
-    except engine.StickMorphError as e:
-        raise StickMorphError(engine_error_message(e, source_name, target_name)) from e
-    if not report:
-        vertices = ", ".join(str(v) for v in report.vertices)
-        where = f" (vertex {vertices})" if len(report.vertices) == 1 else (
-            f" (vertices {vertices})" if vertices else "")
-        if report.kind == "mirror_image":
-            raise StickMorphError(
-                f"incompatible figures: '{target_name}' is a mirror image of '{source_name}'"
-                f"{where}: {report.reason}")
-        raise StickMorphError(
-            f"incompatible figures '{source_name}' and '{target_name}'{where}: {report.reason}")
-
-
 def compute_morph(prepared: PreparedPair, settings: BakeSettings) -> MorphResult:
-    """The morph's frames in world space. Raises StickMorphError, before any
-    engine work for settings out of range."""
+    """The morph's frames in world space. The engine validates both figures and
+    checks their compatibility as it starts (one check per bake; its
+    exceptions become messages naming the objects, engine_error_message).
+    Raises StickMorphError, before any engine work for settings out of range."""
     frame_count, enclosure_sides, easing = settings.frame_count, settings.enclosure_sides, settings.easing
-    if not 2 <= frame_count <= MAX_ENGINE_FRAMES:
-        raise StickMorphError(f"the number of frames must be between 2 and {MAX_ENGINE_FRAMES}, got {frame_count}")
-    if not 3 <= enclosure_sides <= MAX_ENCLOSURE_SIDES:
-        raise StickMorphError(f"the enclosure needs 3 to {MAX_ENCLOSURE_SIDES} sides, got {enclosure_sides}")
+    engine = load_engine()
+    limits = engine.limits
+    # frame_count here, not only in the engine: with easing the engine sees
+    # engine_frame_count's oversampled number, clamped to its maximum, and
+    # would accept a frame_count beyond it.
+    if not limits["min_frames"] <= frame_count <= limits["max_frames"]:
+        raise StickMorphError(f"the number of frames must be between {limits['min_frames']} and "
+                              f"{limits['max_frames']}, got {frame_count}")
+    if not limits["min_enclosure_sides"] <= enclosure_sides <= limits["max_enclosure_sides"]:
+        raise StickMorphError(f"the enclosure needs {limits['min_enclosure_sides']} to "
+                              f"{limits['max_enclosure_sides']} sides, got {enclosure_sides}")
     if easing not in EASINGS:
         raise StickMorphError(f"unknown easing {easing!r}")
-    engine = load_engine()
     m = engine_frame_count(frame_count, easing)
     try:
         # verify: easing picks engine frames instead of interpolating

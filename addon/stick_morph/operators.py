@@ -221,7 +221,6 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
         progress.stage("read", 5)
         prepared = core.prepare_pair(source_world, source_edges, source_faces, source.name,
                                      target_world, target_edges, target_faces, target.name, settings)
-        core.check_pair(prepared)
         progress.stage("check", 15)
         morph = core.compute_morph(prepared, settings)
         progress.stage("morph", 60)

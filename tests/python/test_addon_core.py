@@ -12,6 +12,7 @@ tested in tests/blender, inside Blender.
 """
 import dataclasses
 import importlib
+import json
 import importlib.machinery
 import pathlib
 import subprocess
@@ -66,6 +67,17 @@ def test_core_finds_the_built_engine():
 
 
 # ------------------------------------------------------------- settings ----
+
+def test_the_addons_copy_of_the_limits_is_the_engines():
+    # common.ENGINE_LIMITS gives the properties their ranges at registration,
+    # before the module is known to load: it must be stickmorph.limits exactly.
+    engine = core.load_engine()
+    assert common.ENGINE_LIMITS == engine.limits
+    assert core.engine_limits() == engine.limits
+    # The settings' defaults are the engine's (and hence the properties').
+    assert core.BakeSettings().frame_count == engine.limits["default_frames"]
+    assert core.BakeSettings().enclosure_sides == engine.limits["default_enclosure_sides"]
+
 
 def test_bake_settings_defaults_and_frozen():
     settings = core.BakeSettings()
@@ -193,7 +205,6 @@ def prepare(source=SOURCE_WORLD, target=TARGET_WORLD, settings=core.BakeSettings
 def test_morph_starts_at_the_source_and_ends_at_the_target_in_world_space():
     prepared = prepare()
     assert (prepared.source_name, prepared.target_name) == ("Arm", "Arm pose")
-    core.check_pair(prepared)
     settings = core.BakeSettings(frame_count=7)
     morph = core.compute_morph(prepared, settings)
     assert morph.frames_world.shape == (7, len(TREE_SOURCE), 3)
@@ -263,16 +274,77 @@ def test_prepare_pair_names_the_object_at_fault():
         prepare(target=broken)
 
 
-def test_check_pair_names_the_objects():
-    crossing = TREE_SOURCE.copy()
-    crossing[2] = [-1.0, -1.0]
-    crossing[6] = [1.0, 1.0]
+def crossing(figure):
+    """figure with vertices 2 and 6 swapped across the junction: arms 0-1-2
+    and 0-5-6 then cross."""
+    figure = np.array(figure, dtype=np.float64)
+    figure[2] = [-1.0, -1.0]
+    figure[6] = [1.0, 1.0]
+    return figure
+
+
+def morph_fails(**changes):
+    """compute_morph's message for the tree pair with the given changes."""
     with pytest.raises(core.StickMorphError) as error:
-        core.check_pair(prepare(source=in_space(crossing, [1.0, -2.0, 0.5])))
-    assert str(error.value).startswith("crossing edges: 'Arm': ")
+        core.compute_morph(prepare(**changes), core.BakeSettings(frame_count=3))
+    return str(error.value)
+
+
+def test_engine_errors_name_the_objects_by_role():
+    # The engine validates both figures as the morph starts; its message says
+    # "source: ..." or "target: ...", the report puts the object's name there.
+    engine = core.load_engine()
+    message = morph_fails(source=in_space(crossing(TREE_SOURCE), [1.0, -2.0, 0.5]))
+    with pytest.raises(engine.InvalidFigureError) as error:
+        engine.validate(crossing(TREE_SOURCE), TREE_EDGES)
+    assert message == f"crossing edges: 'Arm': {error.value} (mesh edge indices)"
+    message = morph_fails(target=in_space(crossing(TREE_TARGET), [4.0, 1.0, -0.5]))
+    assert message.startswith("crossing edges: 'Arm pose': edges ") and "target" not in message
+
+
+def test_an_incompatible_pair_is_reported_from_the_morphs_own_check():
+    engine = core.load_engine()
     mirrored = TREE_TARGET * [-1.0, 1.0]
-    with pytest.raises(core.StickMorphError, match="'Arm pose' is a mirror image of 'Arm'"):
-        core.check_pair(prepare(target=in_space(mirrored, [4.0, 1.0, -0.5])))
+    message = morph_fails(target=in_space(mirrored, [4.0, 1.0, -0.5]))
+    report = engine.check_compatibility(TREE_SOURCE, mirrored, TREE_EDGES)
+    assert report.kind == "mirror_image" and len(report.vertices) == 1
+    assert message == (f"incompatible figures: 'Arm pose' is a mirror image of 'Arm' "
+                       f"(vertex {report.vertices[0]}): {report.reason}")
+
+
+INCOMPATIBLE = REPO / "tests" / "data" / "pairs" / "incompatible"
+
+
+@pytest.mark.parametrize("name", ["mirror_image", "polygon_reversed", "junction_rotation", "exterior_differs"])
+def test_the_morphs_exception_carries_the_compatibility_report(name):
+    # What engine_error_message reads instead of checking the pair again.
+    engine = core.load_engine()
+    source, target = (json.loads((INCOMPATIBLE / f"{name}.{role}.json").read_text())
+                      for role in ("source", "target"))
+    report = engine.check_compatibility(source["vertices"], target["vertices"], source["edges"])
+    with pytest.raises(engine.IncompatibleFiguresError) as error:
+        engine.morph(source["vertices"], target["vertices"], source["edges"], frames=2)
+    e = error.value
+    assert (e.kind, e.vertices, e.reason) == (report.kind, report.vertices, report.reason)
+    assert str(e) == f"incompatible figures: {report.reason}"
+    message = core.engine_error_message(e, "S", "T")
+    assert message.endswith(f": {report.reason}") and "incompatible figures: incompatible" not in message
+
+
+@pytest.mark.parametrize("role", ["source", "target"])
+def test_invalid_figure_detail_is_the_message_without_the_role(role):
+    engine = core.load_engine()
+    figures = {"source": TREE_SOURCE, "target": TREE_TARGET}
+    figures[role] = crossing(figures[role])
+    with pytest.raises(engine.InvalidFigureError) as error:
+        engine.morph(figures["source"], figures["target"], TREE_EDGES, frames=2)
+    e = error.value
+    assert (e.role, e.defect) == (role, "crossing_edges")
+    assert str(e) == f"{role}: {e.detail}" and e.detail.startswith("edges ")
+    # A figure on its own has no role: the detail is the whole message.
+    with pytest.raises(engine.InvalidFigureError) as error:
+        engine.validate(figures[role], TREE_EDGES)
+    assert error.value.role is None and error.value.detail == str(error.value) == e.detail
 
 
 def test_tube_radius():
