@@ -12,7 +12,7 @@ import bpy
 import numpy as np
 import pytest
 
-from conftest import TREE, make_mesh_object, make_pair, select, snapshot
+from conftest import TREE, addon_import, make_mesh_object, make_pair, select, snapshot
 
 
 def bake_fails(**kwargs):
@@ -64,3 +64,20 @@ def test_poll_explains_itself(scene, addon):
             bpy.ops.object.stick_morph_bake()
     finally:
         bpy.ops.object.mode_set(mode="OBJECT")
+
+
+def test_an_incompatible_pair_is_checked_once(scene, addon, monkeypatch):
+    # The morph checks compatibility as it starts and its exception carries
+    # the report (kind, vertices, reason): the bake needs no check of its own.
+    engine = addon_import("core").load_engine()
+    calls = []
+    check = engine.check_compatibility
+    monkeypatch.setattr(engine, "check_compatibility",
+                        lambda *args, **kwargs: calls.append(args) or check(*args, **kwargs))
+    source_xy, target_xy, edges = TREE
+    source = make_mesh_object("Source", source_xy, edges)
+    target = make_mesh_object("Target", np.asarray(target_xy) * [-1.0, 1.0], edges)
+    select(source, target)
+    message = bake_fails()
+    assert "'Target' is a mirror image of 'Source'" in message and "(vertex " in message, message
+    assert calls == []

@@ -63,3 +63,20 @@ def test_bake_settings_read_each_option_from_its_property(addon):
     # And from the operator as it runs: the redo panel's values.
     op = bpy.context.window_manager.operator_properties_last("object.stick_morph_bake")
     assert dataclasses.asdict(preferences.bake_settings(op)) == {name: getattr(op, name) for name in names}
+
+
+def test_property_ranges_and_help_texts_are_the_engines_limits(scene, addon, addon_name):
+    # Registered from common.ENGINE_LIMITS (the module may be missing then);
+    # here the module is loaded, so compare with what the engine enforces.
+    limits = addon_import("core").load_engine().limits
+    holders = {
+        "operator": bpy.ops.object.stick_morph_bake.get_rna_type().properties,
+        "scene settings": scene.stick_morph.bl_rna.properties,
+        "preferences": bpy.context.preferences.addons[addon_name].preferences.bl_rna.properties,
+    }
+    for where, properties in holders.items():
+        for name, option in (("frame_count", "frames"), ("enclosure_sides", "enclosure_sides")):
+            prop = properties[name]
+            least, most = limits[f"min_{option}"], limits[f"max_{option}"]
+            assert (prop.hard_min, prop.hard_max) == (least, most), (where, name)
+            assert f"({least} to {most})" in prop.description, (where, name, prop.description)
