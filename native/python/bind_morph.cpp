@@ -1,20 +1,25 @@
 // The morph (Algorithm 3 end to end, through the engine's
-// morph_stick_figures) and the limits and option names the engine checks,
+// morph_stick_figures), the stateful solver for scrubbing any t
+// (MorphSolver), and the limits and option names the engine checks,
 // exported so that the add-on and help texts quote them instead of copies.
-//
-// No binding of a stateful morph solver (scrubbing any t) yet: the engine
-// has no public solver class; when it has one, it belongs here.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <climits>
 #include <cmath>
+#include <cstdint>
+#include <mutex>
 #include <string>
 #include <vector>
 
 #include "bindings.h"
 #include "conversions.h"
 #include "stickmorph/argument_limits.h"
+#include "stickmorph/decomposition.h"
 #include "stickmorph/errors.h"
+#include "stickmorph/frame_verification.h"
+#include "stickmorph/internal/morph_topology.h"
+#include "stickmorph/morph_solver.h"
 #include "stickmorph/morph_stick_figures.h"
 
 namespace stickmorph::python {
@@ -105,12 +110,297 @@ py::dict option_names_dict() {
   return names;
 }
 
+
+// ---------------------------------------------------------------------------
+// MorphSolver
+
+// The dict triangulate_figures returns (and morph returns as
+// "triangulation"), back to the engine's type. Only the form is checked
+// here; whether it is a triangulation the morph can use (node counts,
+// indices in range, a disk bounded by the convex enclosure, every triangle
+// counter-clockwise in both) is the engine's check, made by MorphSolver's
+// constructor as morph_triangulation makes it.
+sm::FigureTriangulation to_figure_triangulation(const py::object& object) {
+  if (!py::isinstance<py::dict>(object))
+    throw sm::InvalidArgumentError("triangulation must be the dict triangulate_figures returns, got " +
+                                   py::str(py::type::of(object).attr("__name__")).cast<std::string>());
+  const py::dict dict = py::reinterpret_borrow<py::dict>(object);
+  const auto item = [&](const char* key) -> py::object {
+    if (!dict.contains(key))
+      throw sm::InvalidArgumentError(std::string("triangulation has no '") + key + "' entry");
+    return dict[key];
+  };
+  // Bounded so that n + k + s cannot overflow the engine's int; any count
+  // this large fails the engine's check against the positions anyway.
+  constexpr long long kMaxCount = 1LL << 28;
+  const auto count = [&](const char* key) {
+    const std::string name = std::string("triangulation['") + key + "']";
+    const py::object value = item(key);
+    const long long n = to_count(value, name);
+    if (n < 0 || n > kMaxCount)
+      throw sm::InvalidArgumentError(name + " must be between 0 and " + std::to_string(kMaxCount) + ", got " +
+                                     py::str(value).cast<std::string>());
+    return static_cast<int>(n);
+  };
+  sm::FigureTriangulation tri;
+  tri.figure_vertices = count("figure_vertices");
+  tri.enclosure_vertices = count("enclosure_vertices");
+  tri.steiner_vertices = count("steiner_vertices");
+  tri.source = to_vertices(item("source"), "triangulation['source']");
+  tri.target = to_vertices(item("target"), "triangulation['target']");
+
+  const py::array triangles =
+      py::module_::import("numpy").attr("asarray")(item("triangles")).cast<py::array>();
+  const bool empty = triangles.ndim() == 1 && triangles.shape(0) == 0;
+  if (!empty && (triangles.ndim() != 2 || triangles.shape(1) != 3))
+    throw sm::InvalidArgumentError("triangulation['triangles'] must have shape (#T, 3), got " +
+                                   py::str(triangles.attr("shape")).cast<std::string>());
+  const char kind = triangles.dtype().kind();
+  if (!empty && kind != 'i' && kind != 'u')
+    throw sm::InvalidArgumentError("triangulation['triangles'] must hold integer node indices, got dtype " +
+                                   py::str(triangles.dtype()).cast<std::string>());
+  const py::ssize_t t = empty ? 0 : triangles.shape(0);
+  tri.triangles.resize(static_cast<std::size_t>(t));
+  if (t > 0) {
+    // uint64 beyond INT64_MAX wraps negative in the cast: still refused
+    // below, as out of range.
+    const auto values = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(triangles);
+    if (!values) throw py::error_already_set();
+    const std::int64_t* data = values.data();
+    for (py::ssize_t i = 0; i < 3 * t; ++i) {
+      // An index beyond int becomes -1, which the engine reports as a node
+      // out of range, naming the triangle.
+      const std::int64_t v = data[i];
+      tri.triangles[i / 3][i % 3] = v < INT_MIN || v > INT_MAX ? -1 : static_cast<int>(v);
+    }
+  }
+  return tri;
+}
+
+// A time argument: any real number (int, float, NumPy scalar); booleans are
+// refused like frames=True, a time of True is a mistake. The range check is
+// here, not only in the engine, so that the message quotes the value.
+double to_time(const py::object& object) {
+  if (PyBool_Check(object.ptr()) || !(PyFloat_Check(object.ptr()) || PyIndex_Check(object.ptr()) ||
+                                      py::hasattr(object, "__float__")) ||
+      py::isinstance<py::str>(object))
+    throw sm::InvalidArgumentError("t must be a number in [0, 1], got " +
+                                   py::str(py::type::of(object).attr("__name__")).cast<std::string>());
+  const double t = py::float_(object).cast<double>();
+  if (!(t >= 0 && t <= 1))
+    throw sm::InvalidArgumentError("t must be in [0, 1], got " + py::repr(py::float_(t)).cast<std::string>());
+  return t;
+}
+
+// stickmorph.MorphSolver: the engine's MorphSolver with the per-frame
+// check and repair of morph_triangulation, so that a scrubbed frame is
+// verified as a morph's frame is.
+class MorphSolverBinding {
+ public:
+  MorphSolverBinding(sm::FigureTriangulation triangulation, sm::StickFigure source, sm::WeightKind kind)
+      : tri_(std::move(triangulation)),
+        source_(std::move(source)),
+        decomposition_(sm::decompose(source_)),
+        solver_(tri_, kind),
+        kind_(kind) {}
+
+  // All node positions at t; see the docstring for the contract.
+  std::vector<sm::Vec2> solve(double t, bool verify) {
+    // One solve at a time: the engine solver carries state from solve to
+    // solve, and the GIL is released while it runs.
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<sm::Vec2> positions;
+    bool direct = false;
+    const bool endpoint = t == 0 || t == 1;
+    if (endpoint) {
+      // The inputs themselves, as the morph's first and last frames: the
+      // solve reproduces them only up to rounding.
+      positions = t == 0 ? tri_.source : tri_.target;
+    } else {
+      positions = solve_or_name(t, false);
+      direct = solver_.last_solve_factorized();
+    }
+    if (!verify) return positions;
+    // The morph's repair sequence (morph_triangulation): a warm-started
+    // iterative result that fails is solved directly at t; one that still
+    // fails is refined in long double; only then is the frame refused.
+    std::string defect = frame_defect(positions, t);
+    if (!defect.empty() && !endpoint && !direct) {
+      positions = solve_or_name(t, true);
+      defect = frame_defect(positions, t);
+    }
+    if (!defect.empty() && !endpoint) {
+      positions = solver_.refine(kRefinementRounds);
+      defect = frame_defect(positions, t);
+      if (!defect.empty()) defect += " (after refinement in long double)";
+    }
+    if (!defect.empty()) throw sm::VerificationError("MorphSolver.solve: " + defect);
+    return positions;
+  }
+
+  int figure_vertices() const { return tri_.figure_vertices; }
+  sm::WeightKind kind() const { return kind_; }
+  sm::MorphSolverStats stats() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return solver_.stats();
+  }
+
+ private:
+  // As morph_triangulation: three rounds reach the correctly rounded result.
+  static constexpr int kRefinementRounds = 3;
+
+  static std::string time_label(double t) { return "t = " + sm::format_double(t); }
+
+  std::vector<sm::Vec2> solve_or_name(double t, bool directly) {
+    try {
+      return directly ? solver_.solve_directly(t) : solver_.solve(t);
+    } catch (const sm::VerificationError&) {
+      throw sm::VerificationError("MorphSolver.solve: " + time_label(t) + ": the morph's linear system is singular");
+    }
+  }
+
+  // The frame check of morph_triangulation: (1) every triangle
+  // counter-clockwise (exact; with the fixed convex enclosure this makes the
+  // frame a triangulation with the source's connectivity), (2) the figure a
+  // stick figure compatible with the source (verify_frame). Empty if both
+  // pass, else the defect, led by the time instead of a frame index.
+  std::string frame_defect(const std::vector<sm::Vec2>& positions, double t) const {
+    const int bad = sm::internal::first_non_positive(tri_, positions);
+    if (bad >= 0) return time_label(t) + ": " + sm::internal::triangle_text(tri_, bad) + " is not counter-clockwise";
+    const std::vector<sm::Vec2> figure(positions.begin(), positions.begin() + tri_.figure_vertices);
+    try {
+      sm::verify_frame(source_, decomposition_, figure, 0);
+    } catch (const sm::VerificationError& error) {
+      // verify_frame names a frame index; a scrubbed frame has only its time.
+      const std::string prefix = sm::frame_label(0, NAN) + ": ";
+      std::string what = error.what();
+      if (what.compare(0, prefix.size(), prefix) == 0) what.erase(0, prefix.size());
+      return time_label(t) + ": " + what;
+    }
+    return {};
+  }
+
+  const sm::FigureTriangulation tri_;
+  const sm::StickFigure source_;
+  const sm::Decomposition decomposition_;
+  sm::MorphSolver solver_;
+  const sm::WeightKind kind_;
+  std::mutex mutex_;
+};
+
 }  // namespace
 
 void bind_morph(py::module_& m) {
   m.attr("limits") = limits_dict();
   m.attr("OPTION_NAMES") = option_names_dict();
   m.attr("METHOD_NAMES") = py::make_tuple("barycentric", "linear");
+
+  py::class_<MorphSolverBinding>(m, "MorphSolver", R"doc(The morph of one triangulation at any time t, for scrubbing (paper, Algorithm 3, step 4).
+
+MorphSolver(triangulation, edges, weights="mvc") computes the
+convex-combination weights of both embeddings and analyses the linear
+system once; solve(t) then gives the figure at any t in [0, 1], in any
+order. Nearby times are cheap: each solve iterates on the factorization of
+a nearby time from the previous solution, and factorizes anew only when
+that is too far. The same solver and per-frame check as morph(), which
+solves its frames in order with one such solver.
+
+Args:
+  triangulation: the dict triangulate_figures returns (or morph()'s
+    "triangulation" entry): "figure_vertices", "enclosure_vertices",
+    "steiner_vertices", "source", "target" and "triangles".
+  edges: #E by 2 integer array-like, the source figure's edges over the
+    first n nodes, as given to triangulate_figures. Needed for the frame
+    check (a triangulation does not say which of its edges are the
+    figure's).
+  weights: "mvc" (mean value coordinates, default), "uniform" or "floater",
+    as for morph().
+
+Raises:
+  InvalidArgumentError: an unknown weights name, a triangulation that is not
+    such a dict or not one the morph can use (malformed, a triangle not
+    counter-clockwise, an enclosure that is not fixed and convex), or an
+    array of the wrong shape or type.
+  InvalidFigureError: the first n source nodes joined by edges are not a
+    valid stick figure.
+
+A MorphSolver may be shared between threads: solves run one at a time,
+without the GIL.)doc")
+      .def(py::init([](const py::object& triangulation, const py::object& edges, const py::object& weights) {
+             // Arguments first, then the triangulation, then the figure.
+             const sm::WeightKind kind = sm::parse_weight_kind(to_name(weights, "weights"));
+             sm::FigureTriangulation tri = to_figure_triangulation(triangulation);
+             {
+               // The engine's form check before the first n positions are
+               // read as a figure: it names what is malformed.
+               py::gil_scoped_release release;
+               sm::internal::build_topology(tri);
+             }
+             const std::vector<sm::Vec2> figure(tri.source.begin(), tri.source.begin() + tri.figure_vertices);
+             sm::StickFigure source = make_figure(to_point_array(figure), edges, "triangulation['source']", "edges");
+             py::gil_scoped_release release;
+             return std::make_unique<MorphSolverBinding>(std::move(tri), std::move(source), kind);
+           }),
+           py::arg("triangulation"), py::arg("edges"), py::arg("weights") = "mvc")
+      .def(
+          "solve",
+          [](MorphSolverBinding& self, const py::object& t, const py::object& all_nodes, const py::object& verify) {
+            const double time = to_time(t);
+            const bool all = to_flag(all_nodes, "all_nodes");
+            const bool check = to_flag(verify, "verify");
+            std::vector<sm::Vec2> positions;
+            {
+              py::gil_scoped_release release;
+              positions = self.solve(time, check);
+              if (!all) positions.resize(static_cast<std::size_t>(self.figure_vertices()));
+            }
+            return to_point_array(positions);
+          },
+          py::arg("t"), py::kw_only(), py::arg("all_nodes") = false, py::arg("verify") = true,
+          R"doc(The morph at time t.
+
+Args:
+  t: a number in [0, 1]; 0 is the source, 1 the target.
+  all_nodes: return all n+k+s triangulation nodes (figure vertices, then
+    enclosure, then Steiner vertices, as in the triangulation dict) instead
+    of the figure's n vertices.
+  verify: check the result exactly (default True), as morph() checks every
+    frame: every triangle counter-clockwise and the figure a stick figure
+    compatible with the source; a result that fails is solved directly at t
+    and then refined in long double before it is refused. verify=False
+    skips the check and the repair, for a scrubbing preview that must be
+    fast; the result is then valid in exact arithmetic (Tutte's theorem)
+    but not checked against rounding.
+
+Returns:
+  #n by 2 float64 ndarray of the figure's vertex positions at t (with
+  all_nodes=True, (n+k+s) by 2). At t = 0 and t = 1 exactly the source and
+  target positions. Elsewhere the solution of the morph's linear system to
+  about ten significant digits (the engine's iteration tolerance): the same
+  t can differ in the last digits depending on the times solved before it.
+  Solving morph()'s times in order from a new MorphSolver gives morph()'s
+  frames bit for bit.
+
+Raises:
+  InvalidArgumentError: t outside [0, 1], NaN or not a number; all_nodes or
+    verify not a bool.
+  VerificationError: with verify=True, the result failed the exact check
+    even after refinement; the message names t.)doc")
+      .def_property_readonly(
+          "weights", [](const MorphSolverBinding& self) { return sm::weight_kind_name(self.kind()); },
+          "The weight kind's name: \"mvc\", \"uniform\" or \"floater\".")
+      .def_property_readonly(
+          "stats",
+          [](MorphSolverBinding& self) {
+            const sm::MorphSolverStats stats = self.stats();
+            py::dict dict;
+            dict["factorizations"] = stats.factorizations;
+            dict["factorize_ms"] = stats.factorize_ms;
+            dict["solve_ms"] = stats.solve_ms;
+            return dict;
+          },
+          "What the solver spent so far: \"factorizations\" (int, numeric LU factorizations), "
+          "\"factorize_ms\" and \"solve_ms\" (float, milliseconds).");
 
   m.def(
       "morph",
