@@ -7,7 +7,7 @@
 // rejects duplicate object keys (which RFC 8259 leaves undefined, and which
 // would make a file mean different things to different readers), and limits
 // nesting so that hostile input cannot exhaust memory. The parsing is
-// nlohmann-json's (json.cpp says which checks are added to it and why).
+// nlohmann-json's (json_reader.cpp says which checks are added to it and why).
 //
 // The writer emits doubles as the shortest decimal text that reads back as
 // the same double, as FORMAT.md requires of every command's output.
