@@ -54,11 +54,9 @@ using internal::ms_since;
 
 FigureTriangulation triangulate_figures(const StickFigure& source, const StickFigure& target,
                                         const FigureTriangulationOptions& options, FigureTriangulationStats* stats) {
-  if (options.enclosure_sides < 3)
-    throw InvalidArgumentError("the enclosure needs at least 3 sides, got " + std::to_string(options.enclosure_sides));
-  if (options.enclosure_sides > kMaxEnclosureSides)
-    throw InvalidArgumentError("the enclosure can have at most " + std::to_string(kMaxEnclosureSides) + " sides, got " +
-                               std::to_string(options.enclosure_sides));
+  // The interfaces check it first (morph_stick_figures, the CLI, the
+  // module); this is the same check for direct callers, in the same words.
+  check_enclosure_sides(options.enclosure_sides, OptionSpelling::Keyword);
   FigureTriangulationStats measured;
   auto stage_start = Clock::now();
   // Algorithm 3, step 1.

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <utility>
 
+#include "stickmorph/argument_limits.h"
 #include "stickmorph/decomposition.h"
 #include "stickmorph/frame_verification.h"
 #include "stickmorph/internal/barycentric_weights.h"
@@ -21,12 +22,6 @@ namespace stickmorph {
 namespace {
 
 using namespace internal;
-
-void check_frame_count(int frames) {
-  if (frames < 2 || frames > kMaxMorphFrames)
-    throw InvalidArgumentError("the number of frames must be between 2 and " + std::to_string(kMaxMorphFrames) +
-                               ", got " + std::to_string(frames));
-}
 
 // t_f = f / (N - 1); the division makes the last time exactly 1.
 std::vector<double> frame_times(int frames) {
@@ -107,7 +102,8 @@ std::vector<Vec2> solve_morph_frame(const FigureTriangulation& triangulation, do
 
 MorphResult morph_triangulation(const FigureTriangulation& triangulation, const StickFigure& source,
                                 const MorphOptions& options) {
-  check_frame_count(options.frames);
+  // The interfaces check it first; the same check for direct callers.
+  check_frames(options.frames, OptionSpelling::Keyword);
   MorphResult result;
   result.times = frame_times(options.frames);
   auto start = Clock::now();
@@ -181,7 +177,7 @@ MorphResult morph_triangulation(const FigureTriangulation& triangulation, const 
 
 MorphResult linear_morph(const StickFigure& source, const StickFigure& target, int frames,
                          std::vector<int>* invalid_frames) {
-  check_frame_count(frames);
+  check_frames(frames, OptionSpelling::Keyword);
   if (source.vertices.size() != target.vertices.size())
     throw InvalidArgumentError("the source has " + std::to_string(source.vertices.size()) +
                                " vertices and the target " + std::to_string(target.vertices.size()));

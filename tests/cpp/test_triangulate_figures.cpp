@@ -138,12 +138,12 @@ TEST_CASE("bad requests", "[triangulate_figures]") {
   CHECK_THROWS_AS(triangulate_figures(star, swapped), IncompatibleFiguresError);
   FigureTriangulationOptions options;
   options.enclosure_sides = 2;
-  CHECK_THROWS_WITH(triangulate_figures(star, star, options), Contains("at least 3 sides"));
+  CHECK_THROWS_WITH(triangulate_figures(star, star, options), Contains("enclosure_sides must be at least 3"));
   // The annulus work grows quadratically in the sides; a huge count would
   // hang the caller, so the engine itself refuses it.
   options.enclosure_sides = kMaxEnclosureSides + 1;
   CHECK_THROWS_AS(triangulate_figures(star, star, options), InvalidArgumentError);
-  CHECK_THROWS_WITH(triangulate_figures(star, star, options), Contains("at most 1000 sides"));
+  CHECK_THROWS_WITH(triangulate_figures(star, star, options), Contains("enclosure_sides must be at most 1000"));
   options.enclosure_sides = kMaxEnclosureSides;
   CHECK_NOTHROW(verify_figure_triangulation(triangulate_figures(star, star, options), star));
 }
