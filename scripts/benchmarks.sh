@@ -16,8 +16,8 @@
 #   polygon_pairs.json  stickmorph_benchmark on tests/data/polygon_pairs
 #   morph.jsonl         stickmorph_benchmark_morph on the generated corpus
 #   run.json            machine, date, commit, command, runtime
-# and then scripts/make_benchmarks.py (Debian's /usr/bin/python3, standard
-# library only) writes BENCHMARKS.md and the SVG plots from those files.
+# and then scripts/make_benchmarks.py (Debian's /usr/bin/python3 with
+# python3-matplotlib) writes BENCHMARKS.md and the SVG plots from those files.
 # --quick runs sizes 10 to 300 only, to try the pipeline in a minute; the
 # report gives the command it was made with.
 set -euo pipefail
