@@ -18,7 +18,7 @@
 #include "stickmorph/decomposition.h"
 #include "stickmorph/errors.h"
 #include "stickmorph/frame_verification.h"
-#include "stickmorph/internal/morph_topology.h"
+#include "stickmorph/internal/morph_topology.h"  // build_topology: the form check of a triangulation
 #include "stickmorph/morph_solver.h"
 #include "stickmorph/morph_stick_figures.h"
 
@@ -204,38 +204,14 @@ class MorphSolverBinding {
         solver_(tri_, kind),
         kind_(kind) {}
 
-  // All node positions at t; see the docstring for the contract.
+  // All node positions at t; see the docstring for the contract. The frame
+  // is made and checked exactly as a morph's frame (checked_morph_frame).
   std::vector<sm::Vec2> solve(double t, bool verify) {
     // One solve at a time: the engine solver carries state from solve to
     // solve, and the GIL is released while it runs.
     std::lock_guard<std::mutex> lock(mutex_);
-    std::vector<sm::Vec2> positions;
-    bool direct = false;
-    const bool endpoint = t == 0 || t == 1;
-    if (endpoint) {
-      // The inputs themselves, as the morph's first and last frames: the
-      // solve reproduces them only up to rounding.
-      positions = t == 0 ? tri_.source : tri_.target;
-    } else {
-      positions = solve_or_name(t, false);
-      direct = solver_.last_solve_factorized();
-    }
-    if (!verify) return positions;
-    // The morph's repair sequence (morph_triangulation): a warm-started
-    // iterative result that fails is solved directly at t; one that still
-    // fails is refined in long double; only then is the frame refused.
-    std::string defect = frame_defect(positions, t);
-    if (!defect.empty() && !endpoint && !direct) {
-      positions = solve_or_name(t, true);
-      defect = frame_defect(positions, t);
-    }
-    if (!defect.empty() && !endpoint) {
-      positions = solver_.refine(kRefinementRounds);
-      defect = frame_defect(positions, t);
-      if (!defect.empty()) defect += " (after refinement in long double)";
-    }
-    if (!defect.empty()) throw sm::VerificationError("MorphSolver.solve: " + defect);
-    return positions;
+    return sm::checked_morph_frame(solver_, tri_, source_, decomposition_, t, -1, verify, "MorphSolver.solve: ")
+        .positions;
   }
 
   int figure_vertices() const { return tri_.figure_vertices; }
@@ -246,40 +222,6 @@ class MorphSolverBinding {
   }
 
  private:
-  // As morph_triangulation: three rounds reach the correctly rounded result.
-  static constexpr int kRefinementRounds = 3;
-
-  static std::string time_label(double t) { return "t = " + sm::format_double(t); }
-
-  std::vector<sm::Vec2> solve_or_name(double t, bool directly) {
-    try {
-      return directly ? solver_.solve_directly(t) : solver_.solve(t);
-    } catch (const sm::VerificationError&) {
-      throw sm::VerificationError("MorphSolver.solve: " + time_label(t) + ": the morph's linear system is singular");
-    }
-  }
-
-  // The frame check of morph_triangulation: (1) every triangle
-  // counter-clockwise (exact; with the fixed convex enclosure this makes the
-  // frame a triangulation with the source's connectivity), (2) the figure a
-  // stick figure compatible with the source (verify_frame). Empty if both
-  // pass, else the defect, led by the time instead of a frame index.
-  std::string frame_defect(const std::vector<sm::Vec2>& positions, double t) const {
-    const int bad = sm::internal::first_non_positive(tri_, positions);
-    if (bad >= 0) return time_label(t) + ": " + sm::internal::triangle_text(tri_, bad) + " is not counter-clockwise";
-    const std::vector<sm::Vec2> figure(positions.begin(), positions.begin() + tri_.figure_vertices);
-    try {
-      sm::verify_frame(source_, decomposition_, figure, 0);
-    } catch (const sm::VerificationError& error) {
-      // verify_frame names a frame index; a scrubbed frame has only its time.
-      const std::string prefix = sm::frame_label(0, NAN) + ": ";
-      std::string what = error.what();
-      if (what.compare(0, prefix.size(), prefix) == 0) what.erase(0, prefix.size());
-      return time_label(t) + ": " + what;
-    }
-    return {};
-  }
-
   const sm::FigureTriangulation tri_;
   const sm::StickFigure source_;
   const sm::Decomposition decomposition_;

@@ -40,14 +40,13 @@ std::string frame_defect(const StickFigure& source, const Decomposition& source_
 }  // namespace
 
 std::string frame_label(int frame_index, double time) {
+  // Four significant digits name the time well enough for a reader; the
+  // index is the exact reference.
+  char text[32];
+  if (std::isfinite(time)) std::snprintf(text, sizeof text, "%.4g", time);
+  if (frame_index < 0) return std::string("t = ") + (std::isfinite(time) ? text : "?");
   std::string label = "frame " + std::to_string(frame_index);
-  if (std::isfinite(time)) {
-    // Four significant digits name the time well enough for a reader; the
-    // index is the exact reference.
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4g", time);
-    label += std::string(" (t = ") + text + ")";
-  }
+  if (std::isfinite(time)) label += std::string(" (t = ") + text + ")";
   return label;
 }
 

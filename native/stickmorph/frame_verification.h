@@ -49,7 +49,8 @@ bool is_frame_valid(const StickFigure& source, const Decomposition& source_decom
                     const std::vector<Vec2>& positions);
 
 /// "frame 12 (t = 0.2449)", or "frame 12" when time is not finite: the
-/// prefix of every message about a frame.
+/// prefix of every message about a frame. A negative index names a frame
+/// by its time alone, "t = 0.2449" (a frame scrubbed at any t has no index).
 std::string frame_label(int frame_index, double time);
 
 }  // namespace stickmorph

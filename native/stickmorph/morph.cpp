@@ -100,6 +100,63 @@ std::vector<Vec2> solve_morph_frame(const FigureTriangulation& triangulation, do
   return solver.solve_directly(t);
 }
 
+CheckedFrame checked_morph_frame(MorphSolver& solver, const FigureTriangulation& triangulation,
+                                 const StickFigure& source, const Decomposition& source_decomposition,
+                                 double t, int frame, bool verify, const std::string& context) {
+  // Refinement rounds for a frame that fails: each round gains roughly the
+  // extra precision of long double until the result is correctly rounded;
+  // beyond three it no longer changes.
+  constexpr int kRefinementRounds = 3;
+  // A singular system names the frame (it never is for positive weights).
+  auto solve = [&](bool directly) {
+    try {
+      return directly ? solver.solve_directly(t) : solver.solve(t);
+    } catch (const VerificationError&) {
+      throw VerificationError(context + frame_label(frame, t) + ": the morph's linear system is singular");
+    }
+  };
+  CheckedFrame result;
+  const bool endpoint = t == 0 || t == 1;
+  bool direct = false;
+  if (endpoint) {
+    // The endpoints are the inputs themselves. The solve reproduces them
+    // only up to rounding amplified by the condition number of
+    // I - W_interior (the source is the fixed point of W0 in exact
+    // arithmetic), while the contract (FORMAT.md) promises frames[0] is
+    // the source and the last frame the target, bit for bit.
+    result.positions = t == 0 ? triangulation.source : triangulation.target;
+  } else {
+    // Iterating on a nearby frame's factorization, refactorizing when it
+    // is too far (MorphSolver::solve).
+    result.positions = solve(false);
+    direct = solver.last_solve_factorized();
+  }
+  if (!verify) return result;
+  auto defect_now = [&] {
+    const auto start = Clock::now();
+    std::string defect = frame_defect(triangulation, source, source_decomposition, result.positions, frame, t);
+    result.verify_ms += ms_since(start);
+    return defect;
+  };
+  std::string defect = defect_now();
+  if (!defect.empty() && !endpoint && !direct) {
+    // The iteration's residual can flip a nearly flat triangle: solve
+    // this frame directly.
+    result.positions = solve(true);
+    defect = defect_now();
+  }
+  if (!defect.empty() && !endpoint) {
+    // Rounding in the solve can flip a nearly flat triangle that is
+    // positive in exact arithmetic (the theorem of [8] holds exactly).
+    result.positions = solver.refine(kRefinementRounds);
+    result.refined = true;
+    defect = defect_now();
+    if (!defect.empty()) defect += " (after refinement in long double)";
+  }
+  if (!defect.empty()) throw VerificationError(context + defect);
+  return result;
+}
+
 MorphResult morph_triangulation(const FigureTriangulation& triangulation, const StickFigure& source,
                                 const MorphOptions& options) {
   // The interfaces check it first; the same check for direct callers.
@@ -112,62 +169,14 @@ MorphResult morph_triangulation(const FigureTriangulation& triangulation, const 
   const double setup_ms = ms_since(start);
 
   const Decomposition source_decomposition = decompose(source);
-  // Refinement rounds for a frame that fails: each round gains roughly the
-  // extra precision of long double until the result is correctly rounded;
-  // beyond three it no longer changes.
-  constexpr int kRefinementRounds = 3;
-  const int last = options.frames - 1;
   result.frames.reserve(options.frames);
-  // A singular system names the frame (it never is for positive weights).
-  auto solve_frame = [&](int f, double t, bool directly) {
-    try {
-      return directly ? solver.solve_directly(t) : solver.solve(t);
-    } catch (const VerificationError&) {
-      throw VerificationError(frame_label(f, t) + ": the morph's linear system is singular");
-    }
-  };
-  for (int f = 0; f <= last; ++f) {
-    const double t = result.times[f];
-    std::vector<Vec2> positions;
-    bool direct = false;
-    if (f == 0 || f == last) {
-      // The endpoints are the inputs themselves. The solve reproduces them
-      // only up to rounding amplified by the condition number of
-      // I - W_interior (the source is the fixed point of W0 in exact
-      // arithmetic), while the contract (FORMAT.md) promises frames[0] is
-      // the source and the last frame the target, bit for bit.
-      positions = f == 0 ? triangulation.source : triangulation.target;
-    } else {
-      // Iterating on a nearby frame's factorization, refactorizing when it
-      // is too far (MorphSolver::solve).
-      positions = solve_frame(f, t, false);
-      direct = solver.last_solve_factorized();
-    }
-    if (options.verify) {
-      start = Clock::now();
-      std::string defect = frame_defect(triangulation, source, source_decomposition, positions, f, t);
-      result.stats.verify_ms += ms_since(start);
-      if (!defect.empty() && f != 0 && f != last && !direct) {
-        // The iteration's residual can flip a nearly flat triangle: solve
-        // this frame directly.
-        positions = solve_frame(f, t, true);
-        start = Clock::now();
-        defect = frame_defect(triangulation, source, source_decomposition, positions, f, t);
-        result.stats.verify_ms += ms_since(start);
-      }
-      if (!defect.empty() && f != 0 && f != last) {
-        // Rounding in the solve can flip a nearly flat triangle that is
-        // positive in exact arithmetic (the theorem of [8] holds exactly).
-        positions = solver.refine(kRefinementRounds);
-        ++result.stats.refined_frames;
-        start = Clock::now();
-        defect = frame_defect(triangulation, source, source_decomposition, positions, f, t);
-        result.stats.verify_ms += ms_since(start);
-        if (!defect.empty()) defect += " (after refinement in long double)";
-      }
-      if (!defect.empty()) throw VerificationError("morph: " + defect);
-    }
-    result.frames.push_back(std::move(positions));
+  for (int f = 0; f < options.frames; ++f) {
+    CheckedFrame frame =
+        checked_morph_frame(solver, triangulation, source, source_decomposition, result.times[f], f, options.verify,
+                            "morph: ");
+    result.stats.verify_ms += frame.verify_ms;
+    if (frame.refined) ++result.stats.refined_frames;
+    result.frames.push_back(std::move(frame.positions));
   }
   result.stats.factorize_ms = setup_ms + solver.stats().factorize_ms;
   result.stats.solve_ms = solver.stats().solve_ms;

@@ -120,6 +120,33 @@ Eigen::SparseMatrix<double, Eigen::RowMajor> barycentric_weights(const FigureTri
                                                                  const std::vector<Vec2>& positions,
                                                                  WeightKind kind);
 
+class MorphSolver;
+struct Decomposition;
+
+/// One frame as morph_triangulation makes it, from the solver's state.
+struct CheckedFrame {
+  std::vector<Vec2> positions;  ///< all n+k+s node positions
+  bool refined = false;         ///< the exact check needed long double refinement
+  double verify_ms = 0;         ///< time spent in the exact checks
+};
+
+/// The frame at time t in [0, 1] the way morph_triangulation computes it,
+/// for the morph's frame loop and for scrubbing (stickmorph.MorphSolver):
+/// at t = 0 and 1 the inputs themselves (the contract promises them bit for
+/// bit), otherwise `solver`'s warm-started solve. With `verify`, the frame's
+/// exact check: (1) every triangle counter-clockwise, which with the fixed
+/// convex enclosure makes the frame a triangulation with the source's
+/// connectivity, then (2) verify_frame, the figure a stick figure compatible
+/// with the source. A frame that fails is solved directly at t, then refined
+/// in long double (rounding can flip a nearly flat triangle that is positive
+/// in exact arithmetic, where the theorem of [8] holds), and only then
+/// refused. `frame` names the frame in messages (frame_label; negative: by
+/// its time alone); `context` leads every message ("morph: ").
+/// @throws VerificationError "<context><frame label>: <defect>".
+CheckedFrame checked_morph_frame(MorphSolver& solver, const FigureTriangulation& triangulation,
+                                 const StickFigure& source, const Decomposition& source_decomposition,
+                                 double t, int frame, bool verify, const std::string& context);
+
 /// The solve of [8] alone at one time t in [0, 1]: all node positions of
 /// (I - W_interior(t)) x = W_boundary(t) x_boundary, without substituting
 /// the exact endpoints and without verification. For tests and diagnostics.

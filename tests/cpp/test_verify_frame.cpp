@@ -114,4 +114,7 @@ TEST_CASE("frame labels", "[verify_frame]") {
   CHECK(frame_label(0, 0.0) == "frame 0 (t = 0)");
   CHECK(frame_label(49, 1.0) == "frame 49 (t = 1)");
   CHECK(frame_label(3, std::numeric_limits<double>::quiet_NaN()) == "frame 3");
+  // A frame scrubbed at any t (stickmorph.MorphSolver) is named by its time.
+  CHECK(frame_label(-1, 0.25) == "t = 0.25");
+  CHECK(frame_label(-1, 1.0) == "t = 1");
 }
