@@ -29,19 +29,11 @@ CONSTANT = 0
 
 
 def fill_constant_fcurve(fcurve, frames, values):
-    """baking._fill_fcurve with CONSTANT keyframes: fcurve (holding one
-    keyframe already) gets exactly the given ones."""
+    """baking._fill_fcurve with CONSTANT keyframes: the add-on's fill, then
+    every keyframe's interpolation switched (relative keys must not blend)."""
+    baking._fill_fcurve(fcurve, frames, values)
     points = fcurve.keyframe_points
-    missing = len(frames) - len(points)
-    if missing > 0:
-        points.add(missing)
-    co = np.empty(2 * len(frames), dtype=np.float32)
-    co[0::2] = frames
-    co[1::2] = values
-    points.foreach_set("co", co)
-    points.foreach_set("handle_left", co)
-    points.foreach_set("handle_right", co)
-    points.foreach_set("interpolation", np.full(len(frames), CONSTANT, dtype=np.int32))
+    points.foreach_set("interpolation", np.full(len(points), CONSTANT, dtype=np.int32))
     fcurve.update()
 
 
