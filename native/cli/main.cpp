@@ -179,7 +179,9 @@ int run_triangulate(const ParsedArguments& arguments) {
 // from what the engine entry reports. The linear baseline has no
 // triangulation and reports which frames self-intersect instead of the
 // solver's counters.
-std::string morph_document(const StickFigure& source, const MorphStickFiguresResult& result, MorphMethod method) {
+std::string morph_document(const StickFigure& source, const MorphStickFiguresResult& result,
+                           const MorphStickFiguresOptions& options) {
+  const MorphMethod method = options.method;
   const bool linear = method == MorphMethod::Linear;
   const MorphStickFiguresStats& stats = result.stats;
   MorphStats solver;
@@ -195,6 +197,18 @@ std::string morph_document(const StickFigure& source, const MorphStickFiguresRes
   how.options = result.morph_options;
   how.stats = linear ? nullptr : &solver;
   how.invalid_frames = linear ? &stats.invalid_frames : nullptr;
+  RigidMotionReport rigid;
+  if (method == MorphMethod::Rigid) {
+    rigid.rotation = rotation_direction_name(options.rotation.value_or(RotationDirection::Short));
+    rigid.turns = int(options.turns.value_or(0));
+    rigid.easing = easing_name(options.easing.value_or(Easing::None));
+    rigid.similarity = stats.similarity;
+    rigid.similarity_factored = stats.similarity_factored;
+    rigid.exact_frames = stats.guide_exact_frames;
+    rigid.blended_frames = stats.guide_blended_frames;
+    rigid.barycentric_frames = stats.guide_barycentric_frames;
+    how.rigid = &rigid;
+  }
   how.triangulate_ms = stats.triangulate_ms;
   how.morph_ms = stats.morph_ms;
   return morph_file_json(source, result.times, result.frames, how);
@@ -229,6 +243,10 @@ int run_morph(const ParsedArguments& arguments) {
   if (option_value(arguments, "--no-verify")) options.verify = false;
   if (const std::string* name = option_value(arguments, "--steiner")) options.steiner = parse_steiner_method(*name);
   options.enclosure_sides = integer_option(arguments, "--enclosure-sides");
+  if (const std::string* name = option_value(arguments, "--rotation"))
+    options.rotation = parse_rotation_direction(*name);
+  options.turns = integer_option(arguments, "--turns");
+  if (const std::string* name = option_value(arguments, "--easing")) options.easing = parse_easing(*name);
   // The triangulation drawn under the filmstrip needs every node's position.
   options.keep_node_frames = overlay;
   check_morph_options(options);
@@ -238,7 +256,7 @@ int run_morph(const ParsedArguments& arguments) {
                             " -> " + (target.name.empty() ? arguments.positional[1] : target.name);
 
   const MorphStickFiguresResult result = morph_stick_figures(source, target, options);
-  std::vector<cli::OutputFile> files{{output, morph_document(source, result, options.method)}};
+  std::vector<cli::OutputFile> files{{output, morph_document(source, result, options)}};
   if (svg && compare_linear) {
     MorphStickFiguresOptions linear;
     linear.method = MorphMethod::Linear;
@@ -267,6 +285,11 @@ std::string frames_help() {
 std::string enclosure_sides_help() {
   return "sides of the common convex enclosure " +
          range_help(kDefaultEnclosureSides, kMinEnclosureSides, kMaxEnclosureSides);
+}
+
+std::string turns_help() {
+  return "rigid: extra whole turns, counter-clockwise positive (default 0, " + std::to_string(-kMaxExtraTurns) +
+         " to " + std::to_string(kMaxExtraTurns) + ")";
 }
 
 const std::vector<CommandSpec>& commands() {
@@ -301,7 +324,12 @@ const std::vector<CommandSpec>& commands() {
         {"--steiner", "", "NAME", "compatible triangulation method: improved (default), sg2001 or aronov"},
         {"--weights", "", "KIND", "barycentric weights: mvc (default), uniform or floater"},
         {"--enclosure-sides", "", "K", enclosure_sides_help()},
-        {"--method", "", "NAME", "barycentric (default) or linear (straight-line baseline, Fig. 8d)"},
+        {"--method", "", "NAME",
+         "rigid (default: as rigid as validity allows), barycentric (the paper's morph) or linear "
+         "(straight-line baseline, Fig. 8d)"},
+        {"--rotation", "", "DIR", "rigid: which way the figure turns as a whole: short (default), ccw or cw"},
+        {"--turns", "", "K", turns_help()},
+        {"--easing", "", "NAME", "rigid: none (default: even speed) or in-out (slow in and out)"},
         {"--no-verify", "", "", "skip the exact check of every frame"},
         {"--svg", "", "FILE", "also draw a filmstrip of about seven frames"},
         {"--svg-triangulation", "", "", "draw the triangulation under the filmstrip's figures"},
@@ -309,7 +337,10 @@ const std::vector<CommandSpec>& commands() {
        "morph one stick figure into a compatible one",
        "Morphs SOURCE into TARGET (Surazhsky & Gotsman 2001, Algorithm 3): both are\n"
        "embedded in one compatible triangulation of a common convex enclosure, whose\n"
-       "barycentric coordinates are interpolated (Floater & Gotsman 1999). Every frame\n"
+       "barycentric coordinates are interpolated (Floater & Gotsman 1999). The rigid\n"
+       "method (default) first factors out the best-fit rotation, scale and\n"
+       "translation and then follows an as-rigid-as-possible motion of the figure\n"
+       "wherever that is valid, at even speed. Every frame\n"
        "is checked in exact arithmetic to be a stick figure with the source's cyclic\n"
        "sequences unless --no-verify is given; a frame that fails is refined or the\n"
        "command fails naming it. With --method linear the vertices move on straight\n"

@@ -118,6 +118,40 @@ std::string morph_file_json(const StickFigure& source, const std::vector<double>
     out.key("factorizations");
     out.value(how.stats->factorizations);
   }
+  if (how.rigid) {
+    const RigidMotionReport& rigid = *how.rigid;
+    out.key("rigid");
+    out.begin_object();
+    out.key("rotation");
+    out.value(rigid.rotation);
+    out.key("turns");
+    out.value(rigid.turns);
+    out.key("easing");
+    out.value(rigid.easing);
+    out.key("similarity_factored");
+    out.value(rigid.similarity_factored);
+    out.key("similarity");
+    out.begin_object();
+    out.key("angle_degrees");
+    out.value(rigid.similarity.angle * 180.0 / 3.14159265358979323846);
+    out.key("scale");
+    out.value(rigid.similarity.scale);
+    out.key("source_center");
+    write_point(out, rigid.similarity.source_center);
+    out.key("target_center");
+    write_point(out, rigid.similarity.target_center);
+    out.end_object();
+    out.key("guide_frames");
+    out.begin_object();
+    out.key("exact");
+    out.value(rigid.exact_frames);
+    out.key("blended");
+    out.value(rigid.blended_frames);
+    out.key("barycentric");
+    out.value(rigid.barycentric_frames);
+    out.end_object();
+    out.end_object();
+  }
   if (how.invalid_frames) {
     out.key("invalid_frames");
     out.begin_array();

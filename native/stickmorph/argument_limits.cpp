@@ -1,6 +1,7 @@
 #include "stickmorph/argument_limits.h"
 
 #include "stickmorph/errors.h"
+#include "stickmorph/similarity_motion.h"
 
 namespace stickmorph {
 
@@ -14,6 +15,10 @@ const std::vector<OptionName>& option_names() {
       {Option::Verify, "--no-verify", "verify"},
       // compatible_triangulation only; the CLI has no command for it.
       {Option::SmoothingRounds, "", "smoothing_rounds"},
+      // The rigid method's (issue 12).
+      {Option::Rotation, "--rotation", "rotation"},
+      {Option::Turns, "--turns", "turns"},
+      {Option::Easing, "--easing", "easing"},
   };
   return table;
 }
@@ -51,6 +56,10 @@ int check_enclosure_sides(long long sides, OptionSpelling spelling, const std::s
 
 int check_smoothing_rounds(long long rounds, OptionSpelling spelling, const std::string& as_typed) {
   return check_count(Option::SmoothingRounds, rounds, kMinSmoothingRounds, kMaxSmoothingRounds, spelling, as_typed);
+}
+
+int check_turns(long long turns, OptionSpelling spelling, const std::string& as_typed) {
+  return check_count(Option::Turns, turns, -kMaxExtraTurns, kMaxExtraTurns, spelling, as_typed);
 }
 
 }  // namespace stickmorph

@@ -49,6 +49,9 @@ enum class Option {
   EnclosureSides,
   Verify,
   SmoothingRounds,
+  Rotation,
+  Turns,
+  Easing,
 };
 
 /// Which interface's names messages use: the CLI's "--enclosure-sides" or
@@ -82,5 +85,7 @@ int check_count(Option option, long long value, long long least, long long most,
 int check_frames(long long frames, OptionSpelling spelling, const std::string& as_typed = {});
 int check_enclosure_sides(long long sides, OptionSpelling spelling, const std::string& as_typed = {});
 int check_smoothing_rounds(long long rounds, OptionSpelling spelling, const std::string& as_typed = {});
+/// Whole extra turns of the rigid morph, -kMaxExtraTurns to kMaxExtraTurns.
+int check_turns(long long turns, OptionSpelling spelling, const std::string& as_typed = {});
 
 }  // namespace stickmorph

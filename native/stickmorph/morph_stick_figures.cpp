@@ -1,6 +1,10 @@
 #include "stickmorph/morph_stick_figures.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <optional>
 #include <utility>
 
 #include "stickmorph/compatibility.h"
@@ -18,16 +22,108 @@ std::string describe_linear(OptionSpelling spelling) {
   return spelling == OptionSpelling::CommandLine ? "--method linear" : "method='linear'";
 }
 
+// The target mapped back by the similarity at t = 1, as a stick figure, or
+// nothing when rounding made it something else than a figure compatible
+// with the source (possible only for a nearly degenerate figure). A pure
+// similarity pair maps back onto the source up to rounding, and is then
+// snapped onto it exactly, so that its morph needs no Steiner vertex and is
+// the similarity itself.
+std::optional<StickFigure> normalised_target(const StickFigure& source, const StickFigure& target,
+                                             const SimilarityMotion& similarity) {
+  std::vector<Vec2> vertices;
+  vertices.reserve(target.vertices.size());
+  double radius = 0, largest_gap = 0;
+  for (std::size_t v = 0; v < target.vertices.size(); ++v) {
+    vertices.push_back(similarity.unapply(1.0, target.vertices[v]));
+    radius = std::max({radius, std::abs(source.vertices[v][0] - similarity.source_center[0]),
+                       std::abs(source.vertices[v][1] - similarity.source_center[1])});
+    largest_gap = std::max({largest_gap, std::abs(vertices[v][0] - source.vertices[v][0]),
+                            std::abs(vertices[v][1] - source.vertices[v][1])});
+  }
+  // Far below anything visible, far above the rounding of the map.
+  constexpr double kSnap = 1e-9;
+  if (largest_gap <= kSnap * radius) vertices = source.vertices;
+  std::vector<std::array<std::int64_t, 2>> edges;
+  for (const Edge& e : target.edges) edges.push_back({e[0], e[1]});
+  try {
+    StickFigure figure = make_stick_figure(std::move(vertices), edges, target.name);
+    if (!check_compatibility(source, figure).compatible()) return std::nullopt;
+    return figure;
+  } catch (const InvalidFigureError&) {
+    return std::nullopt;
+  }
+}
+
+void morph_rigidly(const StickFigure& source, const StickFigure& target, const MorphStickFiguresOptions& options,
+                   MorphStickFiguresResult& result) {
+  MorphStickFiguresStats& stats = result.stats;
+  // The user's pair must be compatible: its report, not the mapped-back one's.
+  require_compatible(source, target);
+  const SimilarityMotion similarity =
+      fit_similarity(source.vertices, target.vertices, options.rotation.value_or(RotationDirection::Short),
+                     int(options.turns.value_or(0)));
+  stats.similarity = similarity;
+  FigureTriangulation triangulation;
+  std::optional<GuidedMorph> morph;
+  MorphResult morphed;
+  GuidedMorphStats guided;
+  try {
+    auto start = std::chrono::steady_clock::now();
+    const std::optional<StickFigure> normalised = normalised_target(source, target, similarity);
+    if (normalised) {
+      triangulation = triangulate_figures(source, *normalised, result.triangulation_options, &stats.triangulation);
+      try {
+        morph.emplace(triangulation, source, target.vertices, similarity,
+                      RigidGuide(source, target.vertices, similarity), result.morph_options.weights,
+                      options.easing.value_or(Easing::None));
+        stats.similarity_factored = true;
+      } catch (const VerificationError&) {
+        // The triangulation moved to the target by the similarity lost a
+        // nearly flat triangle to rounding: triangulate the pair itself.
+      }
+    }
+    if (!morph) {
+      triangulation = triangulate_figures(source, target, result.triangulation_options, &stats.triangulation);
+      morph.emplace(triangulation, source, target.vertices, SimilarityMotion{},
+                    RigidGuide(source, target.vertices, similarity), result.morph_options.weights,
+                    options.easing.value_or(Easing::None));
+    }
+    stats.triangulate_ms = milliseconds_since(start);
+    start = std::chrono::steady_clock::now();
+    morphed = guided_morph(*morph, result.morph_options.frames, result.morph_options.verify, &guided);
+    stats.morph_ms = milliseconds_since(start);
+  } catch (const InvalidArgumentError& error) {
+    throw InternalError(std::string("morph_stick_figures: the engine refused its own intermediate result: ") +
+                        error.what());
+  }
+  stats.steiner_vertices = triangulation.steiner_vertices;
+  stats.triangles = int(triangulation.triangles.size());
+  stats.solve_ms = morphed.stats.solve_ms;
+  stats.verify_ms = morphed.stats.verify_ms;
+  stats.refined_frames = guided.refined_frames;
+  stats.guide_exact_frames = guided.exact_frames;
+  stats.guide_blended_frames = guided.blended_frames;
+  stats.guide_barycentric_frames = guided.barycentric_frames;
+  const std::size_t n = source.vertices.size();
+  for (const std::vector<Vec2>& frame : morphed.frames)
+    result.frames.emplace_back(frame.begin(), frame.begin() + static_cast<std::ptrdiff_t>(n));
+  if (options.keep_node_frames) result.node_frames = std::move(morphed.frames);
+  result.times = std::move(morphed.times);
+  result.triangulation = morph->triangulation();
+}
+
 }  // namespace
 
 MorphMethod parse_morph_method(const std::string& name) {
+  if (name == "rigid") return MorphMethod::Rigid;
   if (name == "barycentric") return MorphMethod::Barycentric;
   if (name == "linear") return MorphMethod::Linear;
-  throw InvalidArgumentError("unknown morph method '" + name + "' (choose barycentric or linear)");
+  throw InvalidArgumentError("unknown morph method '" + name + "' (choose rigid, barycentric or linear)");
 }
 
 std::string morph_method_name(MorphMethod method) {
   switch (method) {
+    case MorphMethod::Rigid: return "rigid";
     case MorphMethod::Barycentric: return "barycentric";
     case MorphMethod::Linear: return "linear";
   }
@@ -54,7 +150,22 @@ void check_morph_options(const MorphStickFiguresOptions& options) {
       throw InvalidArgumentError("node frames do not exist with " + describe_linear(options.spelling) +
                                  " (the straight-line morph uses no triangulation)");
   }
+  if (options.method != MorphMethod::Rigid) {
+    const std::pair<Option, bool> rigid_only[] = {
+        {Option::Rotation, options.rotation.has_value()},
+        {Option::Turns, options.turns.has_value()},
+        {Option::Easing, options.easing.has_value()},
+    };
+    for (const auto& [option, given] : rigid_only)
+      if (given)
+        throw InvalidArgumentError(describe_option(option, options.spelling) + " has no effect with " +
+                                   (options.spelling == OptionSpelling::CommandLine
+                                        ? "--method " + morph_method_name(options.method)
+                                        : "method='" + morph_method_name(options.method) + "'") +
+                                   " (only the rigid method factors out a rotation and follows a guide)");
+  }
   if (options.enclosure_sides) check_enclosure_sides(*options.enclosure_sides, options.spelling);
+  if (options.turns) check_turns(*options.turns, options.spelling);
 }
 
 MorphStickFiguresResult morph_stick_figures(const StickFigure& source, const StickFigure& target,
@@ -81,6 +192,11 @@ MorphStickFiguresResult morph_stick_figures(const StickFigure& source, const Sti
     stats.verify_ms = linear.stats.verify_ms;
     result.times = std::move(linear.times);
     result.frames = std::move(linear.frames);
+    return result;
+  }
+
+  if (options.method == MorphMethod::Rigid) {
+    morph_rigidly(source, target, options, result);
     return result;
   }
 

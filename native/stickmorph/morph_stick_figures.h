@@ -11,6 +11,14 @@
 // so that the CLI, the Python module, the tests, the fuzzer and the
 // benchmarks all run the same pipeline. The straight-line baseline of the
 // paper's Figure 8d (method Linear) runs through the same entry.
+//
+// Method Rigid (the default, issue 12) runs the same steps with the motion
+// made natural: the global similarity is factored out first (section 6's
+// rotated enclosure, similarity_motion.h), steps 1-3 triangulate the source
+// and the target mapped back by it, and step 4 follows the figure's
+// as-rigid-as-possible guide wherever that is valid (guided_morph.h, after
+// the paper's [17]), at even speed. Every frame is verified exactly, as in
+// method Barycentric, which is step 4 as the paper has it.
 #pragma once
 
 #include <optional>
@@ -20,17 +28,24 @@
 #include "stickmorph/argument_limits.h"
 #include "stickmorph/compatible_triangulation.h"
 #include "stickmorph/figure_triangulation.h"
+#include "stickmorph/guided_morph.h"
 #include "stickmorph/morph.h"
+#include "stickmorph/rigid_guide.h"
+#include "stickmorph/similarity_motion.h"
 #include "stickmorph/stick_figure.h"
 
 namespace stickmorph {
 
 enum class MorphMethod {
-  Barycentric,  ///< Algorithm 3: valid frames, verified unless verify is false
+  /// Algorithm 3 with the similarity factored out and step 4 following an
+  /// as-rigid-as-possible guide where it is valid: valid frames, verified
+  /// unless verify is false, moving as rigidly as validity allows.
+  Rigid,
+  Barycentric,  ///< Algorithm 3 as the paper has it: valid frames, verified unless verify is false
   Linear,       ///< straight lines (Figure 8d); self-intersecting frames are listed, not refused
 };
 
-/// "barycentric", "linear" -> method.
+/// "rigid", "barycentric", "linear" -> method.
 /// @throws InvalidArgumentError naming the accepted names.
 MorphMethod parse_morph_method(const std::string& name);
 std::string morph_method_name(MorphMethod method);
@@ -40,7 +55,7 @@ std::string morph_method_name(MorphMethod method);
 /// asking for one with the linear method is refused (it would be silently
 /// ignored otherwise: a user who asked for a setting would get something else).
 struct MorphStickFiguresOptions {
-  MorphMethod method = MorphMethod::Barycentric;
+  MorphMethod method = MorphMethod::Rigid;
   /// N, kMinMorphFrames to kMaxMorphFrames: t_f = f / (N - 1). long long so
   /// that an interface can hand over an out-of-range value unchanged for
   /// the message.
@@ -49,6 +64,10 @@ struct MorphStickFiguresOptions {
   std::optional<WeightKind> weights;           ///< default WeightKind::MeanValue
   std::optional<long long> enclosure_sides;    ///< default kDefaultEnclosureSides
   std::optional<bool> verify;                  ///< default true: every frame checked exactly
+  // The rigid method's own; asking for them with another method is refused.
+  std::optional<RotationDirection> rotation;   ///< default RotationDirection::Short
+  std::optional<long long> turns;              ///< extra whole turns, ccw positive; default 0
+  std::optional<Easing> easing;                ///< default Easing::None (even speed)
   /// Also return every frame with all n+k+s triangulation nodes
   /// (MorphStickFiguresResult::node_frames), for drawing the triangulation
   /// under the figure or re-checking its triangles. Barycentric only; the
@@ -70,6 +89,15 @@ struct MorphStickFiguresStats {
   double verify_ms = 0;       ///< part of morph_ms (linear: finding the invalid frames)
   int refined_frames = 0;     ///< see MorphStats; 0 for linear
   int factorizations = 0;     ///< see MorphStats; 0 for linear
+  /// Rigid only: how the interior frames were made (GuideFit) and the
+  /// similarity factored out; whether it was (false when the mapped-back
+  /// target was not a figure compatible with the source, which rounding of a
+  /// nearly degenerate figure can cause: the guide still turns the figure).
+  int guide_exact_frames = 0;
+  int guide_blended_frames = 0;
+  int guide_barycentric_frames = 0;
+  bool similarity_factored = false;
+  SimilarityMotion similarity;
   /// Linear only: frames that are not stick figures compatible with the
   /// source (is_frame_valid), increasing. Empty for barycentric, whose
   /// frames are all valid when verified.
@@ -86,7 +114,10 @@ struct MorphStickFiguresResult {
   std::vector<std::vector<Vec2>> frames;
   /// Only with options.keep_node_frames: all n+k+s node positions per frame.
   std::vector<std::vector<Vec2>> node_frames;
-  /// The triangulation the morph used; empty for linear.
+  /// The triangulation the morph used; empty for linear. For rigid, in
+  /// output space: the target's positions are the normalised target's moved
+  /// by the similarity, the figure's exactly the target's, so the target's
+  /// enclosure is the source's rotated, scaled and moved (GuidedMorph).
   std::optional<FigureTriangulation> triangulation;
   /// The options in effect, defaults filled in (for reports such as the
   /// CLI's stats); meaningful for barycentric.
@@ -100,7 +131,8 @@ struct MorphStickFiguresResult {
 /// reported before a file error and before any work.
 /// @throws InvalidArgumentError: frames or enclosure_sides out of range, or
 ///         an option the linear method would ignore (steiner, weights,
-///         enclosure_sides, verify, keep_node_frames).
+///         enclosure_sides, verify, keep_node_frames), or a rigid-only
+///         option (rotation, turns, easing) with another method.
 void check_morph_options(const MorphStickFiguresOptions& options);
 
 /// Algorithm 3 on two figures whose vertices correspond by index.

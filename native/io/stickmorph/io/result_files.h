@@ -9,15 +9,28 @@
 #include "stickmorph/figure_triangulation.h"
 #include "stickmorph/io/json.h"
 #include "stickmorph/morph.h"
+#include "stickmorph/similarity_motion.h"
 #include "stickmorph/stick_figure.h"
 
 namespace stickmorph {
 
 /// How a morph was made: what the morph file's "triangulation" and "stats"
 /// say besides the frames.
+/// What the rigid method did (stats.rigid, an extension of FORMAT.md).
+struct RigidMotionReport {
+  std::string rotation = "short";  ///< the rotation direction asked for
+  int turns = 0;                   ///< extra whole turns asked for
+  std::string easing = "none";
+  SimilarityMotion similarity;     ///< the similarity fitted between source and target
+  bool similarity_factored = false;
+  int exact_frames = 0;            ///< interior frames that are the rigid guide itself
+  int blended_frames = 0;          ///< interior frames following the guide where it is valid
+  int barycentric_frames = 0;      ///< interior frames that fell back to the paper's morph
+};
+
 struct MorphProvenance {
-  /// "barycentric" (the paper's morph) or "linear" (the straight-line
-  /// baseline, FORMAT.md: --method linear).
+  /// "rigid" (the default), "barycentric" (the paper's morph) or "linear"
+  /// (the straight-line baseline, FORMAT.md: --method linear).
   std::string method = "barycentric";
   /// The triangulation the barycentric morph used; null for the linear
   /// baseline, which uses none ("triangulation": null, both counts 0, and
@@ -31,6 +44,8 @@ struct MorphProvenance {
   /// The linear baseline's self-intersecting frames ("invalid_frames");
   /// null to leave the field out.
   const std::vector<int>* invalid_frames = nullptr;
+  /// The rigid method's report; null for the other methods.
+  const RigidMotionReport* rigid = nullptr;
   double triangulate_ms = 0;  ///< wall-clock time of the triangulation
   double morph_ms = 0;        ///< wall-clock time of the morph
 };

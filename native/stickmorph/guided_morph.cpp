@@ -1,0 +1,356 @@
+// The rigid morph following an as-rigid-as-possible guide; see guided_morph.h.
+#include "stickmorph/guided_morph.h"
+
+#include <Eigen/SparseLU>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <utility>
+
+#include "stickmorph/errors.h"
+#include "stickmorph/exact_predicates.h"
+#include "stickmorph/frame_verification.h"
+#include "stickmorph/internal/barycentric_weights.h"
+#include "stickmorph/internal/morph_topology.h"
+#include "stickmorph/internal/stopwatch.h"
+#include "stickmorph/morph_solver.h"
+
+namespace stickmorph {
+namespace {
+
+using namespace internal;
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+// Below this sine of its smallest corner angle a figure vertex's star in
+// the guide frame starts to hand its weights back to [8]'s (step 4), and
+// at 0 (or an invalid star) it has handed them all back. About 6 degrees:
+// large enough that mean value weights near a flat corner never dominate a
+// frame, small enough that a star has to be nearly degenerate to lose any
+// rigidity.
+constexpr double kFullTrustSine = 0.1;
+
+double smoothstep01(double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  return x * x * (3 - 2 * x);
+}
+
+// The defect of a frame in output space, or empty. The enclosure is no
+// longer fixed (the similarity moved it), so its being a simple polygon is
+// checked here: every corner a strict left turn and the sides' directions
+// winding once (counted exactly from comparisons of coordinates: a side
+// points "up" when its end is above its start, or level and to the right;
+// a locally convex polygon turns once iff its sides go from down to up
+// exactly once). With a simple boundary traversed counter-clockwise and
+// every triangle positive, the triangulated disk is embedded (the winding
+// argument of morph_topology.h's build_topology).
+std::string output_defect(const FigureTriangulation& tri, const StickFigure& source,
+                          const Decomposition& source_decomposition, const std::vector<Vec2>& p, int frame,
+                          double time) {
+  const int n = tri.figure_vertices, k = tri.enclosure_vertices;
+  auto up = [&](int i) {
+    const Vec2& a = p[n + i];
+    const Vec2& b = p[n + (i + 1) % k];
+    return b[1] > a[1] || (b[1] == a[1] && b[0] > a[0]);
+  };
+  int rises = 0;
+  for (int i = 0; i < k; ++i) {
+    if (orientation(p[n + i], p[n + (i + 1) % k], p[n + (i + 2) % k]) <= 0)
+      return frame_label(frame, time) + ": the enclosure is not convex at " + node_text(tri, n + (i + 1) % k);
+    if (!up(i) && up((i + 1) % k)) ++rises;
+  }
+  if (rises != 1)
+    return frame_label(frame, time) + ": the enclosure winds " + std::to_string(rises) + " times";
+  const int t = first_non_positive(tri, p);
+  if (t >= 0) return frame_label(frame, time) + ": " + triangle_text(tri, t) + " is not counter-clockwise";
+  const std::vector<Vec2> figure(p.begin(), p.begin() + n);
+  try {
+    verify_frame(source, source_decomposition, figure, frame, time);
+  } catch (const VerificationError& error) {
+    return error.what();
+  }
+  return {};
+}
+
+// One linear system x_v - sum_j w_vj x_j = 0 over the rows of some interior
+// nodes, the other nodes known; a fixed sparsity pattern, so the symbolic
+// factorization is done once.
+class ConvexCombinationSystem {
+ public:
+  ConvexCombinationSystem(const Topology& topo, std::vector<int> rows) : topo_(topo), nodes_(std::move(rows)) {
+    unknown_.assign(topo.nodes, -1);
+    for (int r = 0; r < int(nodes_.size()); ++r) unknown_[nodes_[r]] = r;
+  }
+  int size() const { return int(nodes_.size()); }
+  int node(int row) const { return nodes_[row]; }
+
+  /// Solves with the weights weights(v) over topo.ring[v] of every row's
+  /// node; `positions` supplies the known nodes and receives the solution.
+  /// False if the system is singular (never, for positive weights).
+  template <class Weights>
+  bool solve(const Weights& weights, std::vector<Vec2>& positions) {
+    if (nodes_.empty()) return true;
+    const int m = size();
+    std::vector<Eigen::Triplet<double>> triplets;
+    Eigen::MatrixX2d b = Eigen::MatrixX2d::Zero(m, 2);
+    for (int row = 0; row < m; ++row) {
+      const int v = nodes_[row];
+      const std::vector<double>& w = weights(v);
+      triplets.emplace_back(row, row, 1.0);
+      for (std::size_t j = 0; j < w.size(); ++j) {
+        const int u = topo_.ring[v][j];
+        if (unknown_[u] >= 0) {
+          triplets.emplace_back(row, unknown_[u], -w[j]);
+        } else {
+          b(row, 0) += w[j] * positions[u][0];
+          b(row, 1) += w[j] * positions[u][1];
+        }
+      }
+    }
+    a_.resize(m, m);
+    a_.setFromTriplets(triplets.begin(), triplets.end());
+    a_.makeCompressed();
+    if (!analysed_) {
+      lu_.analyzePattern(a_);
+      analysed_ = true;
+    }
+    lu_.factorize(a_);
+    if (lu_.info() != Eigen::Success) return false;
+    const Eigen::MatrixX2d x = lu_.solve(b);
+    if (!x.allFinite()) return false;
+    for (int row = 0; row < m; ++row) positions[nodes_[row]] = {x(row, 0), x(row, 1)};
+    return true;
+  }
+
+ private:
+  const Topology& topo_;
+  std::vector<int> nodes_;
+  std::vector<int> unknown_;
+  SparseMatrix a_;
+  bool analysed_ = false;
+  Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
+};
+
+}  // namespace
+
+struct GuidedMorph::State {
+  State(const FigureTriangulation& normalised, const StickFigure& source_figure, const SimilarityMotion& motion,
+        RigidGuide rigid_guide, WeightKind kind, Easing easing_kind)
+      : tri(normalised),
+        source(source_figure),
+        decomposition(decompose(source_figure)),
+        similarity(motion),
+        guide(std::move(rigid_guide)),
+        weight_kind(kind),
+        easing(easing_kind),
+        topo(build_topology(tri)),
+        steiner_system(topo, steiner_rows(tri)),
+        full_system(topo, topo.interior_nodes) {}
+
+  static std::vector<int> steiner_rows(const FigureTriangulation& tri) {
+    std::vector<int> rows;
+    for (int v = tri.figure_vertices + tri.enclosure_vertices; v < tri.node_count(); ++v) rows.push_back(v);
+    return rows;
+  }
+
+  const FigureTriangulation tri;  // normalised
+  FigureTriangulation output;     // output space
+  const StickFigure source;
+  const Decomposition decomposition;
+  const SimilarityMotion similarity;
+  const RigidGuide guide;
+  const WeightKind weight_kind;
+  const Easing easing;
+  const Topology topo;
+  std::vector<std::vector<double>> w0, w1;  // per node, over topo.ring (interior nodes only)
+  std::vector<std::vector<double>> wt;      // the blend at the current u
+  ConvexCombinationSystem steiner_system;
+  ConvexCombinationSystem full_system;
+  std::optional<MorphSolver> fallback;  // [8] itself, made on first need
+  GuidedMorphStats stats;
+
+  void blend_weights(double u) {
+    for (int v : topo.interior_nodes)
+      for (std::size_t j = 0; j < wt[v].size(); ++j) wt[v][j] = (1 - u) * w0[v][j] + u * w1[v][j];
+  }
+
+  // Steps 1-2: the guide frame in normalised space.
+  std::vector<Vec2> guide_frame(double u) {
+    const std::vector<Vec2> figure = guide.at(u);
+    std::vector<Vec2> g = tri.source;  // the enclosure is fixed
+    for (int v = 0; v < tri.figure_vertices; ++v) g[v] = similarity.unapply(u, figure[v]);
+    // Warm values for the Steiner nodes are not needed: a direct solve.
+    if (!steiner_system.solve([&](int v) -> const std::vector<double>& { return wt[v]; }, g))
+      throw VerificationError("the rigid morph's Steiner system at u = " + format_double(u) + " is singular");
+    return g;
+  }
+
+  // How much of v's weights come from the guide frame g (step 4).
+  double trust(const std::vector<Vec2>& g, int v) const {
+    const std::vector<int>& ring = topo.ring[v];
+    double smallest_sine = 1, turn = 0;
+    for (std::size_t j = 0; j < ring.size(); ++j) {
+      const Vec2& a = g[ring[j]];
+      const Vec2& b = g[ring[(j + 1) % ring.size()]];
+      const double ax = a[0] - g[v][0], ay = a[1] - g[v][1], bx = b[0] - g[v][0], by = b[1] - g[v][1];
+      const double cross = ax * by - ay * bx, dot = ax * bx + ay * by;
+      const double la = std::hypot(ax, ay), lb = std::hypot(bx, by);
+      if (!(cross > 0) || !(la > 0) || !(lb > 0)) return 0;
+      smallest_sine = std::min(smallest_sine, cross / (la * lb));
+      turn += std::atan2(cross, dot);
+    }
+    // Positive corners that wind more than once are not a star.
+    if (std::abs(turn - 2 * 3.14159265358979323846) > 1e-6) return 0;
+    return smoothstep01(smallest_sine / kFullTrustSine);
+  }
+
+  // Step 4: guide weights where the guide's stars are valid.
+  std::vector<Vec2> blended_frame(const std::vector<Vec2>& g) {
+    std::vector<std::vector<double>> mixed(tri.figure_vertices);
+    for (int v = 0; v < tri.figure_vertices; ++v) {
+      const double a = trust(g, v);
+      mixed[v] = wt[v];
+      if (a <= 0) continue;
+      std::vector<double> guide_weights;
+      try {
+        guide_weights = node_weights(tri, topo, g, v, WeightKind::MeanValue);
+      } catch (const InternalError&) {
+        continue;  // too close to degenerate for weights: [8]'s own
+      }
+      for (std::size_t j = 0; j < mixed[v].size(); ++j)
+        mixed[v][j] = a * guide_weights[j] + (1 - a) * wt[v][j];
+    }
+    std::vector<Vec2> x = tri.source;
+    const bool ok = full_system.solve(
+        [&](int v) -> const std::vector<double>& { return v < tri.figure_vertices ? mixed[v] : wt[v]; }, x);
+    if (!ok) throw VerificationError("the rigid morph's blended system is singular");
+    return x;
+  }
+};
+
+GuidedMorph::GuidedMorph(const FigureTriangulation& normalised, const StickFigure& source,
+                         const std::vector<Vec2>& target_vertices, const SimilarityMotion& similarity,
+                         RigidGuide guide, WeightKind kind, Easing easing)
+    : state_(std::make_unique<State>(normalised, source, similarity, std::move(guide), kind, easing)) {
+  State& s = *state_;
+  const FigureTriangulation& tri = s.tri;
+  require_positive(tri, tri.source, "source");
+  require_positive(tri, tri.target, "target");
+  require_enclosure(tri);
+  if (int(target_vertices.size()) != tri.figure_vertices)
+    throw InvalidArgumentError("GuidedMorph: the target has " + std::to_string(target_vertices.size()) +
+                               " vertices, the triangulation " + std::to_string(tri.figure_vertices));
+  s.w0.assign(tri.node_count(), {});
+  s.w1.assign(tri.node_count(), {});
+  s.wt.assign(tri.node_count(), {});
+  for (int v : s.topo.interior_nodes) {
+    s.w0[v] = node_weights(tri, s.topo, tri.source, v, kind);
+    s.w1[v] = node_weights(tri, s.topo, tri.target, v, kind);
+    s.wt[v] = s.w0[v];
+  }
+  // The triangulation in output space (section 6's rotated enclosure).
+  s.output = tri;
+  s.output.target = similarity.apply(1.0, tri.target);
+  for (int v = 0; v < tri.figure_vertices; ++v) s.output.target[v] = target_vertices[v];
+  const std::string defect = output_defect(s.output, s.source, s.decomposition, s.output.target, -1, 1.0);
+  if (!defect.empty())
+    throw VerificationError("the rigid morph's triangulation moved to the target: " + defect);
+}
+
+GuidedMorph::~GuidedMorph() = default;
+GuidedMorph::GuidedMorph(GuidedMorph&&) noexcept = default;
+GuidedMorph& GuidedMorph::operator=(GuidedMorph&&) noexcept = default;
+
+const FigureTriangulation& GuidedMorph::triangulation() const { return state_->output; }
+const SimilarityMotion& GuidedMorph::similarity() const { return state_->similarity; }
+const GuidedMorphStats& GuidedMorph::stats() const { return state_->stats; }
+
+GuidedFrame GuidedMorph::frame(double t, int frame, bool verify, const std::string& context) {
+  if (!(t >= 0 && t <= 1)) throw InvalidArgumentError("the morph time must be in [0, 1]");
+  State& s = *state_;
+  GuidedFrame result;
+  auto defect_of = [&](const std::vector<Vec2>& p) {
+    const auto start = Clock::now();
+    std::string defect = output_defect(s.output, s.source, s.decomposition, p, frame, t);
+    result.verify_ms += ms_since(start);
+    s.stats.verify_ms += ms_since(start);
+    return defect;
+  };
+  if (t == 0 || t == 1) {
+    // The inputs themselves, bit for bit (FORMAT.md).
+    result.parameter = t;
+    result.positions = t == 0 ? s.output.source : s.output.target;
+    if (verify) {
+      const std::string defect = defect_of(result.positions);
+      if (!defect.empty()) throw VerificationError(context + defect);
+    }
+    return result;
+  }
+  const double u = s.guide.parameter_at(t, s.easing);
+  result.parameter = u;
+  auto start = Clock::now();
+  s.blend_weights(u);
+  const std::vector<Vec2> g = s.guide_frame(u);
+  s.stats.guide_ms += ms_since(start);
+
+  // Step 3: the guide frame itself when it is valid.
+  if (first_non_positive(s.tri, g) < 0) {
+    result.positions = s.similarity.apply(u, g);
+    result.fit = GuideFit::Exact;
+    if (!verify || defect_of(result.positions).empty()) return result;
+  }
+  // Step 4.
+  start = Clock::now();
+  result.positions = s.similarity.apply(u, s.blended_frame(g));
+  s.stats.solve_ms += ms_since(start);
+  result.fit = GuideFit::Blended;
+  if (!verify) return result;
+  std::string defect = defect_of(result.positions);
+  if (defect.empty()) return result;
+
+  // Step 5's fallback: [8] at u, with its own refinement, then moved.
+  start = Clock::now();
+  if (!s.fallback) s.fallback.emplace(s.tri, s.weight_kind);
+  CheckedFrame plain = checked_morph_frame(*s.fallback, s.tri, s.source, s.decomposition, u, frame, true, context);
+  s.stats.solve_ms += ms_since(start) - plain.verify_ms;
+  s.stats.verify_ms += plain.verify_ms;
+  result.verify_ms += plain.verify_ms;
+  result.refined = plain.refined;
+  result.positions = s.similarity.apply(u, plain.positions);
+  result.fit = GuideFit::Barycentric;
+  defect = defect_of(result.positions);
+  if (!defect.empty()) throw VerificationError(context + defect + " (moved by the rigid morph's similarity)");
+  return result;
+}
+
+MorphResult guided_morph(GuidedMorph& morph, int frames, bool verify, GuidedMorphStats* stats) {
+  MorphResult result;
+  result.times.resize(frames);
+  for (int f = 0; f < frames; ++f) result.times[f] = double(f) / double(frames - 1);
+  int exact = 0, blended = 0, barycentric = 0, refined = 0;
+  for (int f = 0; f < frames; ++f) {
+    GuidedFrame frame = morph.frame(result.times[f], f, verify, "morph: ");
+    if (f > 0 && f < frames - 1) {
+      if (frame.fit == GuideFit::Exact) ++exact;
+      if (frame.fit == GuideFit::Blended) ++blended;
+      if (frame.fit == GuideFit::Barycentric) ++barycentric;
+    }
+    if (frame.refined) ++refined;
+    result.frames.push_back(std::move(frame.positions));
+  }
+  if (stats) {
+    *stats = morph.stats();
+    stats->exact_frames = exact;
+    stats->blended_frames = blended;
+    stats->barycentric_frames = barycentric;
+    stats->refined_frames = refined;
+  }
+  const GuidedMorphStats& s = morph.stats();
+  result.stats.factorize_ms = 0;
+  result.stats.solve_ms = s.guide_ms + s.solve_ms;
+  result.stats.verify_ms = s.verify_ms;
+  result.stats.refined_frames = refined;
+  return result;
+}
+
+}  // namespace stickmorph

@@ -1,0 +1,128 @@
+// The rigid morph: a convex-combination morph that follows an
+// as-rigid-as-possible guide wherever the guide is valid (issue 12).
+//
+// Surazhsky & Gotsman 2001, "Controllable morphing of compatible planar
+// triangulations" (ACM TOG 20(4), the paper's [17]): the morph of [8] may
+// take any positive, row-stochastic weights at time t, not just the blend
+// (1 - t) W0 + t W1, and stays valid by Tutte's theorem. So a node whose
+// star is valid in a desired frame can take its weights from that frame
+// (mean value coordinates, positive there), and the solve then reproduces
+// the desired frame wherever all the stars are valid, and stays a valid
+// triangulation everywhere else.
+//
+// Here, at morph parameter u (RigidGuide::parameter_at of the animation
+// time, for even speed):
+//   1. the guide (RigidGuide, ARAP on the figure's edges, in output space)
+//      is mapped back by the similarity (similarity_motion.h) into the
+//      normalised morph's space, where the enclosure is fixed;
+//   2. the Steiner vertices are placed by the blended weights of [8] with
+//      the figure held at the guide (a small solve: Steiner unknowns only);
+//      that is the guide frame G;
+//   3. if every triangle of G is counter-clockwise (exact), G is the frame:
+//      with the fixed convex enclosure that makes it a triangulation with
+//      the source's connectivity (the theorem in morph_topology.h);
+//   4. otherwise every figure vertex v takes the weights
+//      a_v MVC_G(v) + (1 - a_v) W(u)_v, where a_v in [0, 1] falls smoothly to
+//      0 as v's star in G approaches invalid (so that nothing pops between
+//      frames), Steiner vertices keep W(u); all weights are positive and sum
+//      to 1, so the solve is valid by Tutte's theorem, and as close to the
+//      guide as the valid stars allow;
+//   5. the frame is moved by the similarity at u, and checked exactly in
+//      output space: every triangle counter-clockwise with the enclosure a
+//      convex polygon (a similarity image, no longer fixed: a triangulated
+//      disk whose triangles are all positive and whose boundary is simple is
+//      embedded), then verify_frame on the figure. A frame that fails (only
+//      rounding can make it fail) falls back to step 4, then to the plain
+//      barycentric frame of [8] at u with its refinement (checked_morph_frame),
+//      moved by the similarity and checked again; only then is it refused.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "stickmorph/decomposition.h"
+#include "stickmorph/figure_triangulation.h"
+#include "stickmorph/morph.h"
+#include "stickmorph/rigid_guide.h"
+#include "stickmorph/similarity_motion.h"
+#include "stickmorph/stick_figure.h"
+
+namespace stickmorph {
+
+/// How a frame of the rigid morph was made.
+enum class GuideFit {
+  Exact,        ///< the guide frame itself (step 3)
+  Blended,      ///< guide weights where the guide's stars are valid (step 4)
+  Barycentric,  ///< the barycentric frame of [8] (the fallback of step 5)
+};
+
+struct GuidedFrame {
+  std::vector<Vec2> positions;  ///< all n+k+s node positions, output space
+  GuideFit fit = GuideFit::Exact;
+  double parameter = 0;         ///< the morph parameter u of the animation time
+  bool refined = false;         ///< the barycentric fallback needed long double refinement
+  double verify_ms = 0;
+};
+
+/// Per-frame counts of a rigid morph.
+struct GuidedMorphStats {
+  int exact_frames = 0;        ///< interior frames that are the guide frame
+  int blended_frames = 0;      ///< interior frames that follow the guide where its stars are valid
+  int barycentric_frames = 0;  ///< interior frames that fell back to [8]
+  double guide_ms = 0;         ///< the guide and the Steiner solve (steps 1-2)
+  double solve_ms = 0;         ///< the blended solves (step 4) and fallbacks
+  double verify_ms = 0;        ///< exact checks
+  int refined_frames = 0;
+};
+
+/// The stateful rigid morph: constructed once, then frame(t) for any
+/// animation time t in [0, 1], in any order (scrubbing).
+class GuidedMorph {
+ public:
+  /// `normalised`: the compatible triangulation of the source and the
+  /// target mapped back by `similarity` (its enclosure fixed, as
+  /// morph_triangulation requires); `source` the source figure on its first
+  /// n nodes; `target_vertices` the real target's n vertex positions (the
+  /// last frame, exactly).
+  /// @throws InvalidArgumentError as MorphSolver does; VerificationError if
+  ///         the triangulation moved to the target by the similarity is not
+  ///         positive with a convex enclosure (rounding of a nearly flat
+  ///         triangle).
+  /// `guide` the figure's as-rigid-as-possible trajectory in output space.
+  GuidedMorph(const FigureTriangulation& normalised, const StickFigure& source,
+              const std::vector<Vec2>& target_vertices, const SimilarityMotion& similarity, RigidGuide guide,
+              WeightKind kind, Easing easing);
+  ~GuidedMorph();
+  GuidedMorph(GuidedMorph&&) noexcept;
+  GuidedMorph& operator=(GuidedMorph&&) noexcept;
+
+  /// The frame at animation time t: at 0 and 1 the source and the target
+  /// triangulations exactly; `frame` names it in messages (negative: by its
+  /// time), `context` leads them. With `verify`, every frame is checked
+  /// exactly as described above.
+  /// @throws InvalidArgumentError for t outside [0, 1]; VerificationError
+  ///         "<context><frame label>: <defect>" when no candidate passes.
+  GuidedFrame frame(double t, int frame, bool verify, const std::string& context);
+
+  /// The triangulation in output space: the source's as given, the
+  /// target's positions those of the normalised target moved by the
+  /// similarity at t = 1, with the figure's n vertices exactly the target's.
+  /// Every triangle counter-clockwise in both, the enclosure convex in both
+  /// (the target's is the source's rotated, scaled and moved: section 6's
+  /// rotated enclosure).
+  const FigureTriangulation& triangulation() const;
+  const SimilarityMotion& similarity() const;
+  const GuidedMorphStats& stats() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+/// A rigid morph of N frames at animation times f / (N - 1), counted in
+/// `stats`. frames[f] holds all node positions in output space.
+/// @throws as GuidedMorph.
+MorphResult guided_morph(GuidedMorph& morph, int frames, bool verify, GuidedMorphStats* stats = nullptr);
+
+}  // namespace stickmorph

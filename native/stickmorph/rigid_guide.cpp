@@ -1,0 +1,215 @@
+// The as-rigid-as-possible trajectory of a stick figure; see rigid_guide.h.
+#include "stickmorph/rigid_guide.h"
+
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "stickmorph/errors.h"
+#include "stickmorph/internal/geometry.h"
+
+namespace stickmorph {
+namespace {
+
+using internal::kPi;
+
+// Into (-pi, pi].
+double wrap_angle(double a) {
+  a = std::fmod(a + kPi, 2 * kPi);
+  if (a <= 0) a += 2 * kPi;
+  return a - kPi;
+}
+
+// Samples of the cumulative motion table: fine enough that the inverse,
+// piecewise linear, is within a fraction of a percent of even for any frame
+// count an animation uses, and cheap (one triangular solve per sample).
+constexpr int kMotionSamples = 512;
+
+double ease(double t, Easing easing) {
+  if (easing == Easing::InOut) return t * t * (3 - 2 * t);
+  return t;
+}
+
+}  // namespace
+
+Easing parse_easing(const std::string& name) {
+  if (name == "none") return Easing::None;
+  if (name == "in-out") return Easing::InOut;
+  throw InvalidArgumentError("unknown easing '" + name + "' (choose none or in-out)");
+}
+
+std::string easing_name(Easing easing) {
+  switch (easing) {
+    case Easing::None: return "none";
+    case Easing::InOut: return "in-out";
+  }
+  throw InternalError("easing_name: unknown Easing");
+}
+
+struct RigidGuide::State {
+  int n = 0;
+  std::vector<Edge> edges;
+  std::vector<double> angle0, turn, length0, length1;  // per edge
+  // Connected parts: each has one fixed root (the lowest vertex), the
+  // others are unknowns of one reduced Laplacian.
+  std::vector<int> part;                  // vertex -> part
+  std::vector<int> root;                  // part -> root vertex
+  std::vector<int> unknown;               // vertex -> row, -1 for roots
+  std::vector<int> part_size;             // part -> vertices
+  std::vector<Vec2> center0, center1;     // part -> centroid in source, target
+  std::vector<Vec2> source, target;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> laplacian;
+  int unknowns = 0;
+  std::vector<double> motion;  // cumulative RMS displacement at u = j / kMotionSamples, normalised to [0, 1]
+};
+
+RigidGuide::RigidGuide(const StickFigure& source, const std::vector<Vec2>& target_vertices,
+                       const SimilarityMotion& similarity)
+    : state_(std::make_unique<State>()) {
+  State& s = *state_;
+  s.n = int(source.vertices.size());
+  if (int(target_vertices.size()) != s.n)
+    throw InvalidArgumentError("RigidGuide: the source has " + std::to_string(s.n) + " vertices and the target " +
+                               std::to_string(target_vertices.size()));
+  s.source = source.vertices;
+  s.target = target_vertices;
+  s.edges = source.edges;
+  for (const Edge& e : s.edges) {
+    const Vec2 d0{s.source[e[1]][0] - s.source[e[0]][0], s.source[e[1]][1] - s.source[e[0]][1]};
+    const Vec2 d1{s.target[e[1]][0] - s.target[e[0]][0], s.target[e[1]][1] - s.target[e[0]][1]};
+    const double a0 = std::atan2(d0[1], d0[0]), a1 = std::atan2(d1[1], d1[0]);
+    s.angle0.push_back(a0);
+    // Within half a turn of the whole figure's rotation, so that whole
+    // turns and half turns are shared by every edge.
+    s.turn.push_back(similarity.angle + wrap_angle(a1 - a0 - similarity.angle));
+    s.length0.push_back(std::hypot(d0[0], d0[1]));
+    s.length1.push_back(std::hypot(d1[0], d1[1]));
+  }
+  // Connected parts by union-find.
+  std::vector<int> parent(s.n);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const Edge& e : s.edges) parent[find(e[0])] = find(e[1]);
+  s.part.assign(s.n, -1);
+  std::vector<int> part_of_root(s.n, -1);
+  for (int v = 0; v < s.n; ++v) {
+    const int r = find(v);
+    if (part_of_root[r] < 0) {
+      part_of_root[r] = int(s.root.size());
+      s.root.push_back(v);  // the part's lowest vertex
+      s.part_size.push_back(0);
+      s.center0.push_back({0, 0});
+      s.center1.push_back({0, 0});
+    }
+    const int p = part_of_root[r];
+    s.part[v] = p;
+    ++s.part_size[p];
+    for (int c = 0; c < 2; ++c) {
+      s.center0[p][c] += s.source[v][c];
+      s.center1[p][c] += s.target[v][c];
+    }
+  }
+  for (std::size_t p = 0; p < s.root.size(); ++p)
+    for (int c = 0; c < 2; ++c) {
+      s.center0[p][c] /= s.part_size[p];
+      s.center1[p][c] /= s.part_size[p];
+    }
+  s.unknown.assign(s.n, -1);
+  for (int v = 0; v < s.n; ++v)
+    if (s.root[s.part[v]] != v) s.unknown[v] = s.unknowns++;
+  // The normal equations of min sum_e |p_j - p_i - d_e|^2 with the roots
+  // fixed: the graph Laplacian without the roots' rows and columns,
+  // positive definite, the same for every u.
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (const Edge& e : s.edges) {
+    const int a = s.unknown[e[0]], b = s.unknown[e[1]];
+    if (a >= 0) triplets.emplace_back(a, a, 1.0);
+    if (b >= 0) triplets.emplace_back(b, b, 1.0);
+    if (a >= 0 && b >= 0) {
+      triplets.emplace_back(a, b, -1.0);
+      triplets.emplace_back(b, a, -1.0);
+    }
+  }
+  if (s.unknowns > 0) {
+    Eigen::SparseMatrix<double> L(s.unknowns, s.unknowns);
+    L.setFromTriplets(triplets.begin(), triplets.end());
+    s.laplacian.compute(L);
+    if (s.laplacian.info() != Eigen::Success)
+      throw InternalError("RigidGuide: the figure's reduced Laplacian is not positive definite");
+  }
+  // The cumulative motion table for even speed.
+  s.motion.assign(kMotionSamples + 1, 0.0);
+  std::vector<Vec2> previous = s.source;
+  for (int j = 1; j <= kMotionSamples; ++j) {
+    const std::vector<Vec2> here = at(double(j) / kMotionSamples);
+    long double sum = 0;
+    for (int v = 0; v < s.n; ++v) {
+      const long double dx = here[v][0] - previous[v][0], dy = here[v][1] - previous[v][1];
+      sum += dx * dx + dy * dy;
+    }
+    s.motion[j] = s.motion[j - 1] + std::sqrt(double(sum / std::max(s.n, 1)));
+    previous = here;
+  }
+}
+
+RigidGuide::~RigidGuide() = default;
+RigidGuide::RigidGuide(RigidGuide&&) noexcept = default;
+RigidGuide& RigidGuide::operator=(RigidGuide&&) noexcept = default;
+
+std::vector<Vec2> RigidGuide::at(double u) const {
+  const State& s = *state_;
+  Eigen::MatrixX2d rhs = Eigen::MatrixX2d::Zero(s.unknowns, 2);
+  for (std::size_t e = 0; e < s.edges.size(); ++e) {
+    const double length = (1 - u) * s.length0[e] + u * s.length1[e];
+    const double a = s.angle0[e] + u * s.turn[e];
+    const double dx = length * std::cos(a), dy = length * std::sin(a);
+    const int i = s.unknown[s.edges[e][0]], j = s.unknown[s.edges[e][1]];
+    // d/dp of |p_j - p_i - d|^2 / 2: L p = B^T d.
+    if (j >= 0) {
+      rhs(j, 0) += dx;
+      rhs(j, 1) += dy;
+    }
+    if (i >= 0) {
+      rhs(i, 0) -= dx;
+      rhs(i, 1) -= dy;
+    }
+  }
+  Eigen::MatrixX2d x;
+  if (s.unknowns > 0) x = s.laplacian.solve(rhs);
+  std::vector<Vec2> p(s.n, Vec2{0, 0});
+  for (int v = 0; v < s.n; ++v)
+    if (s.unknown[v] >= 0) p[v] = {x(s.unknown[v], 0), x(s.unknown[v], 1)};
+  // Each part's centroid moves on a straight line.
+  std::vector<Vec2> mean(s.root.size(), Vec2{0, 0});
+  for (int v = 0; v < s.n; ++v)
+    for (int c = 0; c < 2; ++c) mean[s.part[v]][c] += p[v][c];
+  for (int v = 0; v < s.n; ++v) {
+    const int q = s.part[v];
+    for (int c = 0; c < 2; ++c)
+      p[v][c] += (1 - u) * s.center0[q][c] + u * s.center1[q][c] - mean[q][c] / s.part_size[q];
+  }
+  return p;
+}
+
+double RigidGuide::parameter_at(double t, Easing easing) const {
+  if (!(t >= 0 && t <= 1)) throw InvalidArgumentError("the morph time must be in [0, 1]");
+  if (t == 0 || t == 1) return t;
+  const State& s = *state_;
+  const double total = s.motion.back();
+  const double eased = ease(t, easing);
+  if (!(total > 0)) return eased;  // nothing moves: any parametrisation is even
+  const double goal = eased * total;
+  // The first sample at or beyond the goal; linear in between.
+  const auto it = std::lower_bound(s.motion.begin(), s.motion.end(), goal);
+  const int j = std::clamp(int(it - s.motion.begin()), 1, kMotionSamples);
+  const double lo = s.motion[j - 1], hi = s.motion[j];
+  const double f = hi > lo ? (goal - lo) / (hi - lo) : 0.0;
+  return std::clamp((j - 1 + f) / kMotionSamples, 0.0, 1.0);
+}
+
+}  // namespace stickmorph
