@@ -32,7 +32,9 @@ constexpr sm::OptionSpelling kKeyword = sm::OptionSpelling::Keyword;
 // the figures, as the CLI does.
 sm::MorphStickFiguresOptions to_morph_options(const py::object& frames, const py::object& steiner,
                                               const py::object& weights, const py::object& enclosure_sides,
-                                              const py::object& method, const py::object& verify) {
+                                              const py::object& method, const py::object& verify,
+                                              const py::object& rotation, const py::object& turns,
+                                              const py::object& easing) {
   sm::MorphStickFiguresOptions options;
   options.spelling = kKeyword;
   // Here rather than only in the engine so that the message quotes a Python
@@ -47,14 +49,42 @@ sm::MorphStickFiguresOptions to_morph_options(const py::object& frames, const py
     // Range checked by check_morph_options below, after the refusal of
     // options linear would ignore; only a saturated value needs its text.
     options.enclosure_sides = sides;
-    if (options.method == sm::MorphMethod::Barycentric)
+    if (options.method != sm::MorphMethod::Linear)
       sm::check_enclosure_sides(sides, kKeyword, py::str(enclosure_sides));
   }
+  if (!rotation.is_none()) options.rotation = sm::parse_rotation_direction(to_name(rotation, "rotation"));
+  if (!turns.is_none()) {
+    options.turns = to_count(turns, "turns");
+    if (options.method == sm::MorphMethod::Rigid) sm::check_turns(*options.turns, kKeyword, py::str(turns));
+  }
+  if (!easing.is_none()) options.easing = sm::parse_easing(to_name(easing, "easing"));
   sm::check_morph_options(options);
   return options;
 }
 
-py::dict morph_dict(const sm::MorphStickFiguresResult& result, sm::MorphMethod method, std::size_t n) {
+py::dict rigid_dict(const sm::MorphStickFiguresStats& stats, const sm::MorphStickFiguresOptions& options) {
+  py::dict similarity;
+  similarity["angle_degrees"] = stats.similarity.angle * 180.0 / 3.14159265358979323846;
+  similarity["scale"] = stats.similarity.scale;
+  similarity["source_center"] = py::make_tuple(stats.similarity.source_center[0], stats.similarity.source_center[1]);
+  similarity["target_center"] = py::make_tuple(stats.similarity.target_center[0], stats.similarity.target_center[1]);
+  py::dict guide_frames;
+  guide_frames["exact"] = stats.guide_exact_frames;
+  guide_frames["blended"] = stats.guide_blended_frames;
+  guide_frames["barycentric"] = stats.guide_barycentric_frames;
+  py::dict rigid;
+  rigid["rotation"] = sm::rotation_direction_name(options.rotation.value_or(sm::RotationDirection::Short));
+  rigid["turns"] = options.turns.value_or(0);
+  rigid["easing"] = sm::easing_name(options.easing.value_or(sm::Easing::None));
+  rigid["similarity_factored"] = stats.similarity_factored;
+  rigid["similarity"] = similarity;
+  rigid["guide_frames"] = guide_frames;
+  return rigid;
+}
+
+py::dict morph_dict(const sm::MorphStickFiguresResult& result, const sm::MorphStickFiguresOptions& options,
+                    std::size_t n) {
+  const sm::MorphMethod method = options.method;
   const sm::MorphStickFiguresStats& stats = result.stats;
   const bool linear = method == sm::MorphMethod::Linear;
   py::dict milliseconds;
@@ -77,6 +107,7 @@ py::dict morph_dict(const sm::MorphStickFiguresResult& result, sm::MorphMethod m
   statistics["refined_frames"] = stats.refined_frames;
   statistics["factorizations"] = stats.factorizations;
   if (linear) statistics["invalid_frames"] = to_list(stats.invalid_frames);
+  if (method == sm::MorphMethod::Rigid) statistics["rigid"] = rigid_dict(stats, options);
   py::dict dict;
   dict["times"] = py::array_t<double>(static_cast<py::ssize_t>(result.times.size()), result.times.data());
   dict["frames"] = frames_array(result.frames, n);
@@ -235,7 +266,9 @@ class MorphSolverBinding {
 void bind_morph(py::module_& m) {
   m.attr("limits") = limits_dict();
   m.attr("OPTION_NAMES") = option_names_dict();
-  m.attr("METHOD_NAMES") = py::make_tuple("barycentric", "linear");
+  m.attr("METHOD_NAMES") = py::make_tuple("rigid", "barycentric", "linear");
+  m.attr("ROTATION_NAMES") = py::make_tuple("short", "ccw", "cw");
+  m.attr("EASING_NAMES") = py::make_tuple("none", "in-out");
 
   py::class_<MorphSolverBinding>(m, "MorphSolver", R"doc(The morph of one triangulation at any time t, for scrubbing (paper, Algorithm 3, step 4).
 
@@ -349,10 +382,11 @@ Raises:
       [](const py::object& source_xy, const py::object& target_xy, const py::object& edges,
          const py::object& frames, const py::object& steiner, const py::object& weights,
          const py::object& enclosure_sides, const py::object& method, const py::object& verify,
-         const py::object& target_edges) {
+         const py::object& target_edges, const py::object& rotation, const py::object& turns,
+         const py::object& easing) {
         // Arguments first, figures second, as the CLI does.
         const sm::MorphStickFiguresOptions options =
-            to_morph_options(frames, steiner, weights, enclosure_sides, method, verify);
+            to_morph_options(frames, steiner, weights, enclosure_sides, method, verify, rotation, turns, easing);
         const auto figures =
             make_figure_pair(source_xy, target_xy, edges, target_edges, "source_xy", "target_xy");
         sm::MorphStickFiguresResult result;
@@ -360,14 +394,23 @@ Raises:
           py::gil_scoped_release release;
           result = sm::morph_stick_figures(figures.first, figures.second, options);
         }
-        return morph_dict(result, options.method, figures.first.vertices.size());
+        return morph_dict(result, options, figures.first.vertices.size());
       },
       py::arg("source_xy"), py::arg("target_xy"), py::arg("edges"), py::arg("frames") = sm::kDefaultMorphFrames,
       py::arg("steiner") = py::none(), py::arg("weights") = py::none(), py::arg("enclosure_sides") = py::none(),
-      py::arg("method") = "barycentric", py::arg("verify") = py::none(), py::arg("target_edges") = py::none(),
+      py::arg("method") = "rigid", py::arg("verify") = py::none(), py::arg("target_edges") = py::none(),
+      py::arg("rotation") = py::none(), py::arg("turns") = py::none(), py::arg("easing") = py::none(),
       with_limits(R"doc(Morphs one stick figure into a compatible one (paper, Algorithm 3).
 
-The barycentric method (default) compatibly triangulates both figures inside
+The rigid method (default) morphs as rigidly as validity allows: the
+best-fit rotation, uniform scale and translation between the figures are
+factored out and interpolated back in (the rotation the short way unless
+rotation/turns say otherwise, the scale geometrically), and the valid morph
+follows an as-rigid-as-possible motion of the figure's edges wherever that
+motion is valid, at even speed (easing="in-out" slows its start and end).
+Its frames are verified exactly like the barycentric method's.
+
+The barycentric method compatibly triangulates both figures inside
 a common convex enclosure (triangulate_figures) and morphs the triangulation
 by Floater & Gotsman: convex-combination weights interpolated linearly in
 time, positions solved for at every frame. Every frame is then a stick
@@ -393,12 +436,19 @@ Args:
   enclosure_sides: sides of the common regular enclosure,
     {min_enclosure_sides} to {max_enclosure_sides} (default {default_enclosure_sides}).
     Barycentric only.
-  method: "barycentric" (default) or "linear".
-  verify: check every frame exactly (default True). Barycentric only.
+  method: "rigid" (default), "barycentric" or "linear".
+  verify: check every frame exactly (default True). Not for linear.
+  rotation: "short" (default), "ccw" or "cw": which way the figure turns as
+    a whole. Rigid only.
+  turns: extra whole turns, counter-clockwise positive, -{max_turns} to
+    {max_turns} (default 0). Rigid only.
+  easing: "none" (default, even speed) or "in-out". Rigid only.
 
-  The options marked "barycentric only" default to None (not given); giving
+  The options marked "barycentric only" (steiner, weights, enclosure_sides,
+  verify) also apply to rigid; they default to None (not given), and giving
   one with method="linear", which would ignore it, raises
   InvalidArgumentError, as `stickmorph morph --method linear` refuses them.
+  Likewise the rigid-only options with another method.
   target_edges: optional #E by 2 integer array-like, the target's edge list.
 
 Returns:
@@ -416,8 +466,15 @@ Returns:
                      frames whose warm-started iterative solve stalled or
                      failed the exact check and were solved with the direct
                      factorization), "method" (str); for
-                     "barycentric" also "steiner_method", "enclosure_sides",
-                     "weights" and "verified"; for "linear" also
+                     "rigid" and "barycentric" also "steiner_method",
+                     "enclosure_sides", "weights" and "verified"; for
+                     "rigid" also "rigid": dict with "rotation", "turns",
+                     "easing", "similarity_factored" (bool), "similarity"
+                     (dict: "angle_degrees", "scale", "source_center",
+                     "target_center") and "guide_frames" (dict of int:
+                     interior frames that are the rigid guide itself
+                     "exact", follow it where valid "blended", or fell back
+                     to the barycentric frame "barycentric"); for "linear" also
                      "invalid_frames" (list of int, the frames that are not
                      stick figures compatible with the source). For "linear"
                      the counts, refined_frames, factorizations and the

@@ -1,6 +1,8 @@
 // Conversions between Python objects and engine types (conversions.h).
 #include "conversions.h"
 
+#include "stickmorph/similarity_motion.h"
+
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -330,6 +332,7 @@ std::vector<std::pair<std::string, double>> engine_limits() {
           {"min_smoothing_rounds", sm::kMinSmoothingRounds},
           {"max_smoothing_rounds", sm::kMaxSmoothingRounds},
           {"default_smoothing_rounds", sm::kDefaultSmoothingRounds},
+          {"max_turns", sm::kMaxExtraTurns},
           {"max_coordinate_magnitude", sm::kMaxCoordinateMagnitude}};
 }
 
