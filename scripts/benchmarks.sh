@@ -15,6 +15,11 @@
 # out/benchmarks/ (gitignored):
 #   polygon_pairs.json  stickmorph_benchmark on tests/data/polygon_pairs
 #   morph.jsonl         stickmorph_benchmark_morph on the generated corpus
+#   motion_corpus/      scripts/motion_corpus.py: the motion-quality corpus
+#   motion.json         scripts/motion_quality.py on it (issue 12, docs/MOTION.md):
+#                       rigid (if `stickmorph morph --help` lists it),
+#                       barycentric, linear and arap; filmstrips of the worst
+#                       pairs go to docs/benchmarks/motion/
 #   run.json            machine, date, commit, command, runtime
 # and then scripts/make_benchmarks.py (Debian's /usr/bin/python3 with
 # python3-matplotlib) writes BENCHMARKS.md and the SVG plots from those files.
@@ -72,10 +77,10 @@ if [[ "$build_type" != "Release" ]]; then
   echo "error: $build is configured as '$build_type', not Release; remove it or reconfigure" >&2
   exit 2
 fi
-cmake --build "$build" -j2 --target stickmorph_benchmark stickmorph_benchmark_morph
+cmake --build "$build" -j2 --target stickmorph_benchmark stickmorph_benchmark_morph stickmorph
 
 mkdir -p "$data"
-rm -f "$data/polygon_pairs.json" "$data/morph.jsonl" "$data/run.json"
+rm -f "$data/polygon_pairs.json" "$data/morph.jsonl" "$data/motion.json" "$data/run.json"
 
 echo "==== polygon-pair corpus (tests/data/polygon_pairs) ===="
 "$build/stickmorph_benchmark" --json "$data/polygon_pairs.json" "$source_dir/tests/data/polygon_pairs" \
@@ -85,6 +90,28 @@ echo "==== morph corpus (sizes $sizes, $frames frames; progress below) ===="
 "$build/stickmorph_benchmark_morph" --sizes "$sizes" --frames "$frames" --aronov-max "$aronov_max" \
   --sg2001-max "$sg2001_max" --memory-limit-mib "$memory_limit_mib" --json "$data/morph.jsonl" \
   > "$data/morph.md"
+
+echo "==== motion quality (issue 12: scripts/motion_corpus.py, scripts/motion_quality.py) ===="
+# The rigid method is measured once the CLI has it: `stickmorph morph --help`
+# lists it under --method (or, if the help has no --method entry, anywhere).
+morph_help=$("$build/stickmorph" morph --help 2>&1 || true)
+method_help=$(printf '%s\n' "$morph_help" | awk '/^ *--method/ {on = 1; print; next} on && /^ *-/ {on = 0} on')
+[[ -n "$method_help" ]] || method_help=$morph_help
+motion_methods=()
+if [[ "$method_help" == *rigid* ]]; then
+  motion_methods+=(--cli-method "rigid=--method rigid" --filmstrip-method rigid --filmstrip-rows rigid,barycentric)
+else
+  echo "note: stickmorph morph --help lists no rigid method: the motion table has no rigid row"
+  motion_methods+=(--note "no rigid row: \`stickmorph morph --help\` at $commit lists no rigid method"
+                   --filmstrip-method barycentric --filmstrip-rows barycentric)
+fi
+/usr/bin/python3 scripts/motion_corpus.py "$data/motion_corpus" --build-dir "$build" > "$data/motion_corpus.log"
+tail -1 "$data/motion_corpus.log"
+/usr/bin/python3 scripts/motion_quality.py "$data/motion_corpus" --build-dir "$build" \
+  "${motion_methods[@]}" --cli-method "barycentric=--method barycentric" \
+  --filmstrip docs/benchmarks/motion --filmstrip-worst 1 --filmstrip-pairs special_self_turn_180 \
+  --json "$data/motion.json" > "$data/motion.md" 2> "$data/motion.log" \
+  || { tail -20 "$data/motion.log" >&2; exit 1; }
 
 runtime=$(( $(date +%s) - start ))
 cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)

@@ -3,15 +3,18 @@
 
     /usr/bin/python3 scripts/motion_quality.py out/motion_corpus --build-dir build \
         [--frames 30] [--ours-args "--weights uniform"] [--json FILE] [--filmstrip DIR]
+    /usr/bin/python3 scripts/motion_quality.py out/motion_corpus --build-dir build \
+        --cli-method rigid="--method rigid" --cli-method barycentric="--method barycentric"
 
 For every pair (NAME.source.json / NAME.target.json, as scripts/motion_corpus.py writes
-them) it runs `stickmorph morph` (our barycentric morph, once per --weights kind, with
---ours-args passed through), `stickmorph morph --method linear` (straight lines) and an
+them) it runs `stickmorph morph` (our morph, the CLI's default method, once per --weights
+kind, with --ours-args passed through; or, with --cli-method LABEL=ARGS, once per such
+labelled variant), `stickmorph morph --method linear` (straight lines) and an
 as-rigid-as-possible reference computed here (ARAP on the figure's own edges), and
 measures each morph: edge-length deviation, joint-angle deviation, minimum size, speed
-unevenness, turning beyond the needed rotation and frames that are not valid stick figures
-compatible with the source. docs/MOTION.md defines every number; the metric functions
-below are the definitions.
+unevenness, turning beyond the needed rotation, frames that are not valid stick figures
+compatible with the source, and the CLI's own time per frame. docs/MOTION.md defines
+every number; the metric functions below are the definitions.
 
 It prints Markdown: one row per pair and method, then per-method medians and 90th
 percentiles, then the issue's targets as pass/fail per method.
@@ -25,6 +28,7 @@ import shlex
 import subprocess
 import sys
 import tempfile
+import time
 
 import numpy as np
 
@@ -38,6 +42,16 @@ MIN_SIZE, MIN_SIZE_SHARE = 0.9, 0.9
 UNEVEN_MEDIAN, UNEVEN_P90 = 1.2, 1.6
 BEYOND_MAX_DEG = 45.0
 SELF_TURN_DEG, SELF_TURN_EDGE, SELF_TURN_SIZE = 178.0, 0.01, 0.99
+THRESHOLDS = {"edge_dev_median": EDGE_MEDIAN, "edge_dev_p90": EDGE_P90, "joint_dev_median_deg": JOINT_MEDIAN_DEG,
+              "min_size": MIN_SIZE, "min_size_share": MIN_SIZE_SHARE, "unevenness_median": UNEVEN_MEDIAN,
+              "unevenness_p90": UNEVEN_P90, "beyond_max_deg": BEYOND_MAX_DEG, "self_turn_deg": SELF_TURN_DEG,
+              "self_turn_edge_dev": SELF_TURN_EDGE, "self_turn_min_size": SELF_TURN_SIZE}
+# keys of the JSON's per-pair and per-target objects, next to the method labels
+RESERVED_LABELS = {"kind", "vertices", "tags", "target", "key"}
+# The metrics a filmstrip can be the worst pair of, and which end is bad (+1: the largest)
+WORST_KEYS = [("edge_dev", 1), ("joint_dev_deg", 1), ("min_size", -1), ("unevenness", 1), ("beyond_deg", 1)]
+WORST_NAMES = {"edge_dev": "edge-length deviation", "joint_dev_deg": "joint-angle deviation",
+               "min_size": "minimum size", "unevenness": "speed unevenness", "beyond_deg": "turning beyond the need"}
 
 
 # ---------------------------------------------------------------------------
@@ -321,28 +335,32 @@ def summarize(results, methods):
         s["bad_frames_checked"] = all(row["bad_frames"] is not None for row in rows)
         s["min_size_share_ok"] = (sum(1 for row in rows if row["min_size"] >= MIN_SIZE) / len(rows)
                                   if rows else float("nan"))
+        # the CLI's own time per frame (stats.milliseconds.morph / frames); ARAP has none
+        ms = [row["ms_per_frame"] for row in rows if row.get("ms_per_frame") is not None]
+        if ms:
+            s["ms_per_frame"] = {"median": percentile(ms, 50), "p90": percentile(ms, 90), "max": max(ms)}
         summary[m] = s
     return summary
 
 
 def targets(results, summary, methods, corpus):
-    """Issue 12's targets, per method: (target text, {method: (passed, shown value)})."""
+    """Issue 12's targets, per method: (target text, {method: (passed, shown value)}, key)."""
     out = []
 
-    def add(text, fn):
-        out.append((text, {m: fn(m, summary[m]) for m in methods}))
+    def add(key, text, fn):
+        out.append((text, {m: fn(m, summary[m]) for m in methods}, key))
 
-    add(f"edge dev median ≤ {EDGE_MEDIAN} and p90 ≤ {EDGE_P90}",
+    add("edge_dev", f"edge dev median ≤ {EDGE_MEDIAN} and p90 ≤ {EDGE_P90}",
         lambda m, s: (s["edge_dev"]["median"] <= EDGE_MEDIAN and s["edge_dev"]["p90"] <= EDGE_P90,
                       f"{s['edge_dev']['median']:.3f} / {s['edge_dev']['p90']:.3f}"))
-    add(f"joint dev median ≤ {JOINT_MEDIAN_DEG:g}°",
+    add("joint_dev", f"joint dev median ≤ {JOINT_MEDIAN_DEG:g}°",
         lambda m, s: (s["joint_dev_deg"]["median"] <= JOINT_MEDIAN_DEG, f"{s['joint_dev_deg']['median']:.2f}°"))
-    add(f"min size ≥ {MIN_SIZE} in {MIN_SIZE_SHARE:.0%} of pairs",
+    add("min_size", f"min size ≥ {MIN_SIZE} in {MIN_SIZE_SHARE:.0%} of pairs",
         lambda m, s: (s["min_size_share_ok"] >= MIN_SIZE_SHARE, f"{s['min_size_share_ok']:.0%}"))
-    add(f"unevenness median ≤ {UNEVEN_MEDIAN} and p90 ≤ {UNEVEN_P90}",
+    add("unevenness", f"unevenness median ≤ {UNEVEN_MEDIAN} and p90 ≤ {UNEVEN_P90}",
         lambda m, s: (s["unevenness"]["median"] <= UNEVEN_MEDIAN and s["unevenness"]["p90"] <= UNEVEN_P90,
                       f"{s['unevenness']['median']:.2f} / {s['unevenness']['p90']:.2f}"))
-    add(f"no pair turns > {BEYOND_MAX_DEG:g}° beyond the needed rotation",
+    add("beyond", f"no pair turns > {BEYOND_MAX_DEG:g}° beyond the needed rotation",
         lambda m, s: (s["beyond_deg"]["max"] <= BEYOND_MAX_DEG, f"max {s['beyond_deg']['max']:.1f}°"))
 
     def self_turn(m, s):
@@ -358,9 +376,9 @@ def targets(results, summary, methods, corpus):
                    and r["min_size"] >= SELF_TURN_SIZE)
             shown.append(f"{abs(r['turn_deg']):.1f}°, {r['edge_dev']:.3f}, {r['min_size']:.2f}")
         return (ok, "; ".join(shown))
-    add(f"180° self-turn: turns ≥ {SELF_TURN_DEG:g}°, edge dev ≤ {SELF_TURN_EDGE}, min size ≥ {SELF_TURN_SIZE}",
+    add("self_turn", f"180° self-turn: turns ≥ {SELF_TURN_DEG:g}°, edge dev ≤ {SELF_TURN_EDGE}, min size ≥ {SELF_TURN_SIZE}",
         self_turn)
-    add("0 invalid frames (and every morph succeeds)",
+    add("invalid_frames", "0 invalid frames (and every morph succeeds)",
         lambda m, s: ((s["bad_frames"] == 0 and s["failed"] == 0) if s["bad_frames_checked"] else None,
                       f"{s['bad_frames']} in {s['pairs_with_bad_frames']} pairs"
                       + (f", {s['failed']} failed" if s["failed"] else "")
@@ -386,8 +404,8 @@ def print_report(corpus, results, methods, summary, target_rows, per_pair=True, 
                 line([name, str(results[name]["_n"]), m] + [fmt(r[k], f) for k, _, f in COLUMNS] + [bad])
         print(file=file)
     line(["method", "pairs", "edge dev med / p90", "joint dev ° med / p90", "min size med / p10",
-          "unevenness med / p90", "beyond ° med / p90 / max", "bad frames (pairs)"])
-    line(["---"] * 8)
+          "unevenness med / p90", "beyond ° med / p90 / max", "bad frames (pairs)", "ms/frame med"])
+    line(["---"] * 9)
     for m in methods:
         s = summary[m]
         line([m, f"{s['pairs']}" + (f" (+{s['failed']} failed)" if s["failed"] else ""),
@@ -396,7 +414,8 @@ def print_report(corpus, results, methods, summary, target_rows, per_pair=True, 
               f"{s['min_size']['median']:.3f} / {s['min_size']['p10']:.3f}",
               f"{s['unevenness']['median']:.2f} / {s['unevenness']['p90']:.2f}",
               f"{s['beyond_deg']['median']:.1f} / {s['beyond_deg']['p90']:.1f} / {s['beyond_deg']['max']:.1f}",
-              f"{s['bad_frames']} ({s['pairs_with_bad_frames']})" + ("" if s["bad_frames_checked"] else " unchecked")])
+              f"{s['bad_frames']} ({s['pairs_with_bad_frames']})" + ("" if s["bad_frames_checked"] else " unchecked"),
+              f"{s['ms_per_frame']['median']:.3f}" if "ms_per_frame" in s else "—"])
     print(file=file)
     # medians per kind of pair: where a method's motion goes wrong
     kinds = sorted({results[name]["_kind"] for name, _, _ in corpus})
@@ -418,7 +437,7 @@ def print_report(corpus, results, methods, summary, target_rows, per_pair=True, 
         print(file=file)
     line(["target"] + methods)
     line(["---"] * (len(methods) + 1))
-    for text, per in target_rows:
+    for text, per, _ in target_rows:
         cells = []
         for m in methods:
             ok, shown = per[m]
@@ -458,9 +477,104 @@ def svg_filmstrip(path, frames, edges, title, count=7):
     pathlib.Path(path).write_text("\n".join(parts) + "\n")
 
 
+def _path_d(points, edges):
+    """One SVG path for all edges of a frame: M x y L x y per edge, one decimal (small files)."""
+    return " ".join(f"M{points[i][0]:.1f} {points[i][1]:.1f}L{points[j][0]:.1f} {points[j][1]:.1f}"
+                    for i, j in edges)
+
+
+def svg_filmstrip_rows(path, rows, edges, title, count=7):
+    """A filmstrip with one row per method, drawn from frames already computed (no second
+    morph): `count` frames per row at t = 0 ... 1, all rows at one scale so that sizes compare,
+    source blue to target red. rows: (label, caption, frames or None, bad frame indices or None).
+    A drawn frame that is invalid is dashed and marked; a method that failed shows its caption."""
+    drawn = [f for _, _, f, _ in rows if f is not None]
+    cell, pad, left, head, row_head = 130.0, 8.0, 96.0, 22.0, 16.0
+    if drawn:
+        everything = np.concatenate([f.reshape(-1, 2) for f in drawn])
+        lo, hi = everything.min(axis=0), everything.max(axis=0)
+    else:
+        lo, hi = np.zeros(2), np.ones(2)
+    span = float(max(hi - lo)) or 1.0
+    scale = (cell - 2 * pad) / span
+    # keep the aspect ratio, centre the figure's box in its cell
+    off = (cell - 2 * pad - (hi - lo) * scale) / 2
+    width = left + count * cell
+    row_h = row_head + cell + 14
+    height = head + len(rows) * row_h
+    esc = lambda text: str(text).replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")  # noqa: E731
+    parts = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width:.0f}" height="{height:.0f}" '
+             f'viewBox="0 0 {width:.0f} {height:.0f}" font-family="sans-serif">',
+             '<rect width="100%" height="100%" fill="white"/>',
+             f'<text x="4" y="15" font-size="13">{esc(title)}</text>']
+    for r, (label, caption, frames, bad) in enumerate(rows):
+        top = head + r * row_h
+        parts.append(f'<text x="4" y="{top + row_head + cell / 2:.0f}" font-size="12" font-weight="bold">'
+                     f'{esc(label)}</text>')
+        parts.append(f'<text x="{left:.0f}" y="{top + 12:.0f}" font-size="10" fill="#444">{esc(caption)}</text>')
+        if frames is None:
+            continue
+        idx = np.linspace(0, len(frames) - 1, count).round().astype(int)
+        for c, k in enumerate(idx):
+            t = k / max(1, len(frames) - 1)
+            color = f"rgb({int(40 + 180 * t)},{int(90 - 50 * t)},{int(200 - 160 * t)})"
+            x0, y0 = left + c * cell + pad + off[0], top + row_head + cell - pad - off[1]
+            pts = [(x0 + (x - lo[0]) * scale, y0 - (y - lo[1]) * scale) for x, y in frames[k]]
+            invalid = bad is not None and k in bad
+            dash = ' stroke-dasharray="3,2"' if invalid else ""
+            parts.append(f'<path d="{_path_d(pts, edges)}" fill="none" stroke="{color}" stroke-width="1.3" '
+                         f'stroke-linecap="round"{dash}/>')
+            mark = " invalid" if invalid else ""
+            parts.append(f'<text x="{left + c * cell + cell / 2:.0f}" y="{top + row_head + cell + 10:.0f}" '
+                         f'font-size="9" text-anchor="middle" fill="{"#c00" if invalid else "#666"}">'
+                         f'frame {k}{mark}</text>')
+    parts.append("</svg>")
+    pathlib.Path(path).write_text("\n".join(parts) + "\n")
+
+
+def _caption(r):
+    if "error" in r:
+        return "failed: " + r["error"][:120]
+    text = (f"edge dev {r['edge_dev']:.3f}, joint dev {r['joint_dev_deg']:.1f}°, min size {r['min_size']:.2f}, "
+            f"unevenness {r['unevenness']:.2f}, turns {r['turn_deg']:.1f}° of {r['needed_deg']:.1f}° "
+            f"(beyond {r['beyond_deg']:.1f}°)")
+    if r.get("bad_frames"):
+        text += ", invalid frames " + ", ".join(str(k) for k in r["bad_frames"])
+    return text
+
+
+def straight_lines(extra):
+    """Whether CLI options ask for the straight-line morph (a reference, like `linear`)."""
+    extra = list(extra or [])
+    return "--method=linear" in extra or any(a == "--method" and b == "linear" for a, b in zip(extra, extra[1:]))
+
+
+def cli_method(text):
+    """--cli-method LABEL=ARGS: (label, ARGS split like a shell would)."""
+    label, sep, rest = text.partition("=")
+    label = label.strip()
+    if not sep or not label:
+        raise argparse.ArgumentTypeError(f"{text!r}: expected LABEL=ARGS, e.g. rigid=\"--method rigid\"")
+    try:
+        return label, shlex.split(rest)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(f"{text!r}: {exc}")
+
+
+def _repo_relative(path):
+    """A path as the JSON records it: relative to the repository when inside it."""
+    path = pathlib.Path(path).resolve()
+    try:
+        return path.relative_to(REPO).as_posix()
+    except ValueError:
+        return str(path)
+
+
 # ---------------------------------------------------------------------------
 
 def main(argv=None):
+    argv = list(sys.argv[1:] if argv is None else argv)
+    started = time.monotonic()
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("corpus", nargs="?", default="out/motion_corpus", help="corpus folder (motion_corpus.py)")
     ap.add_argument("--build-dir", default=os.environ.get("STICKMORPH_BUILD_DIR", str(REPO / "build")),
@@ -471,13 +585,27 @@ def main(argv=None):
                          '(given --weights, the method runs once with them instead of once per --weights kind)')
     ap.add_argument("--weights", default="mvc,uniform,floater",
                     help="weight kinds our method runs with, comma-separated (default mvc,uniform,floater)")
-    ap.add_argument("--methods", default="ours,linear,arap", help="which of ours,linear,arap to run")
+    ap.add_argument("--cli-method", type=cli_method, action="append", default=[], metavar="LABEL=ARGS",
+                    help='a `stickmorph morph` variant labelled LABEL, with ARGS passed through (empty: the '
+                         'CLI\'s default), e.g. rigid="--method rigid"; repeatable. Given any, --methods '
+                         'defaults to linear,arap (the references)')
+    ap.add_argument("--methods", default=None,
+                    help="which of ours,linear,arap to run (default ours,linear,arap; linear,arap with --cli-method)")
     ap.add_argument("--check-frames", choices=["all", "references", "none"], default="all",
                     help="count invalid frames with `stickmorph check` for every method (all), only for "
                          "straight lines and ARAP (references; ours verifies its own frames), or not at all")
     ap.add_argument("--json", help="write every number (per pair, per method, per frame series) to this file")
-    ap.add_argument("--filmstrip", help="write SVG filmstrips of the 3 worst pairs per metric into this folder")
+    ap.add_argument("--filmstrip", help="write SVG filmstrips of the worst pairs per metric into this folder")
     ap.add_argument("--filmstrip-method", help="the method whose worst pairs are drawn (default: the first)")
+    ap.add_argument("--filmstrip-worst", type=int, default=3, metavar="K",
+                    help="the K worst pairs per metric get a filmstrip (default 3)")
+    ap.add_argument("--filmstrip-rows", metavar="M1,M2,...",
+                    help="draw each filmstrip here, one row per listed method, from the frames already "
+                         "measured (no second CLI run); one file strip_PAIR.svg per pair, however many "
+                         "metrics it is worst in")
+    ap.add_argument("--filmstrip-pairs", default="", metavar="NAME,...",
+                    help="with --filmstrip-rows: also draw these pairs (e.g. special_self_turn_180)")
+    ap.add_argument("--note", action="append", default=[], help="a line of text kept in the JSON (repeatable)")
     ap.add_argument("--summary-only", action="store_true", help="print the summary tables without per-pair rows")
     args = ap.parse_args(argv)
 
@@ -489,20 +617,45 @@ def main(argv=None):
     if not corpus:
         sys.exit(f"error: no NAME.source.json / NAME.target.json pairs in {folder} "
                  "(make them with scripts/motion_corpus.py)")
+    if args.methods is None:
+        args.methods = "linear,arap" if args.cli_method else "ours,linear,arap"
     families = [f.strip() for f in args.methods.split(",") if f.strip()]
+    unknown = [f for f in families if f not in ("ours", "linear", "arap")]
+    if unknown:
+        sys.exit(f"error: --methods {','.join(unknown)}: not one of ours, linear, arap (use --cli-method for others)")
     ours_args = shlex.split(args.ours_args)
     methods = {}  # label -> extra CLI args, or None for ARAP
+
+    def add_method(label, extra):
+        if label in methods:
+            sys.exit(f"error: two methods are labelled {label!r}")
+        if label in RESERVED_LABELS or label.startswith("_"):
+            sys.exit(f"error: {label!r} cannot label a method (the JSON uses it for something else)")
+        methods[label] = extra
     if "ours" in families:
         if "--weights" in ours_args or any(a.startswith("--weights=") for a in ours_args):
-            methods["ours"] = ours_args
+            add_method("ours", ours_args)
         else:
             for w in [w.strip() for w in args.weights.split(",") if w.strip()]:
-                methods[f"ours[{w}]"] = ours_args + ["--weights", w]
+                add_method(f"ours[{w}]", ours_args + ["--weights", w])
+    for label, extra in args.cli_method:
+        add_method(label, extra)
     if "linear" in families:
-        methods["linear"] = ["--method", "linear"]
+        add_method("linear", ["--method", "linear"])
     if "arap" in families:
-        methods["arap"] = None
+        add_method("arap", None)
     labels = list(methods)
+    if not labels:
+        sys.exit("error: no method to run")
+    strip_method = args.filmstrip_method or labels[0]
+    if args.filmstrip and strip_method not in methods:
+        sys.exit(f"error: --filmstrip-method {strip_method}: not one of {', '.join(labels)}")
+    strip_rows = None
+    if args.filmstrip_rows:
+        strip_rows = [m.strip() for m in args.filmstrip_rows.split(",") if m.strip()]
+        missing = [m for m in strip_rows if m not in methods]
+        if missing or not strip_rows:
+            sys.exit(f"error: --filmstrip-rows {','.join(missing)}: not among the methods {', '.join(labels)}")
 
     results = {}
     frames_kept = {}
@@ -525,7 +678,8 @@ def main(argv=None):
                     print(f"warning: {name} {label}: {exc}", file=sys.stderr)
                     continue
                 r = measure(frames, edges, times)
-                reference = extra is None or label == "linear"
+                linear = extra is not None and straight_lines(extra)
+                reference = extra is None or linear
                 if args.check_frames == "all" or (args.check_frames == "references" and reference):
                     r["bad_frames"] = bad_frames(cli, src_path, frames, edges, tmp)
                 elif not reference:
@@ -533,7 +687,18 @@ def main(argv=None):
                     r["bad_frames"] = [] if stats.get("verified", False) else None
                 else:
                     r["bad_frames"] = None
-                if label == "linear" and "invalid_frames" in stats:
+                if extra is not None:
+                    # what the CLI says it ran, and its own wall time (the checks above not included)
+                    ms = stats.get("milliseconds", {})
+                    r["engine_method"] = stats.get("method")
+                    if "weights" in stats:
+                        r["engine_weights"] = stats["weights"]
+                    if isinstance(ms.get("morph"), (int, float)):
+                        r["morph_ms"] = float(ms["morph"])
+                        r["ms_per_frame"] = float(ms["morph"]) / len(frames)
+                    if isinstance(ms.get("triangulate"), (int, float)):
+                        r["triangulate_ms"] = float(ms["triangulate"])
+                if linear and "invalid_frames" in stats:
                     r["engine_invalid_frames"] = stats["invalid_frames"]
                     if r["bad_frames"] is not None and sorted(r["bad_frames"]) != sorted(
                             k for k in stats["invalid_frames"] if 0 < k < len(frames) - 1):
@@ -545,46 +710,97 @@ def main(argv=None):
 
         summary = summarize(results, labels)
         target_rows = targets(results, summary, labels, corpus)
+        for note in args.note:
+            print(f"Note: {note}\n")
         print(f"Motion quality of {len(corpus)} pairs in {folder}, {args.frames} frames"
               + (f", ours with `{args.ours_args}`" if args.ours_args else "") + "\n")
         print_report(corpus, results, labels, summary, target_rows, per_pair=not args.summary_only)
 
-        if args.json:
-            doc = {"corpus": str(folder), "frames": args.frames, "ours_args": args.ours_args, "methods": labels,
-                   "pairs": {name: {"kind": results[name]["_kind"], "vertices": results[name]["_n"],
-                                    **{m: results[name][m] for m in labels if m in results[name]}}
-                             for name, _, _ in corpus},
-                   "summary": summary,
-                   "targets": [{"target": text, **{m: {"pass": ok, "value": shown} for m, (ok, shown) in per.items()}}
-                               for text, per in target_rows]}
-            pathlib.Path(args.json).write_text(json.dumps(_finite(doc), indent=1, allow_nan=False) + "\n")
-
+        filmstrips = []
         if args.filmstrip:
             out = pathlib.Path(args.filmstrip)
             out.mkdir(parents=True, exist_ok=True)
-            m = args.filmstrip_method or labels[0]
-            if m not in methods:
-                sys.exit(f"error: --filmstrip-method {m}: not one of {', '.join(labels)}")
+            m = strip_method
             ok = [name for name, _, _ in corpus if m in results[name] and "error" not in results[name][m]]
-            # worst = largest value, except the minimum size (smallest) and bad frames (most)
-            keys = [("edge_dev", 1), ("joint_dev_deg", 1), ("min_size", -1), ("unevenness", 1), ("beyond_deg", 1)]
+            worst_k = max(0, args.filmstrip_worst)
             # an earlier run's worst pairs are other files: remove them (only names this
             # script writes) so the folder shows one run
-            for key, _ in keys:
-                for old in out.glob(f"{key}_[123]_*.svg"):
+            for key, _ in WORST_KEYS:
+                for old in out.glob(f"{key}_[0-9]*_*.svg"):
                     old.unlink()
-            for key, sign in keys:
-                worst = sorted(ok, key=lambda n: -sign * results[n][m][key])[:3]
-                for rank, name in enumerate(worst, 1):
-                    svg = out / f"{key}_{rank}_{name}.svg"
-                    if methods[m] is None:
-                        frames, edges = frames_kept[(name, m)]
-                        svg_filmstrip(svg, frames, edges, f"{name} {m}: {key} = {results[name][m][key]:.3f}")
-                    else:
-                        extra = methods[m] + (["--svg-compare-linear"] if m != "linear" else [])
-                        run_morph(cli, folder / f"{name}.source.json", folder / f"{name}.target.json",
-                                  pathlib.Path(tmp) / "morph.json", args.frames, extra + ["--svg", str(svg)])
-            print(f"\nfilmstrips of the worst 3 pairs per metric ({m}) in {out}", file=sys.stderr)
+            for old in out.glob("strip_*.svg"):
+                old.unlink()
+            # worst = largest value, except the minimum size (smallest)
+            worst = {key: sorted(ok, key=lambda n: -sign * results[n][m][key])[:worst_k] for key, sign in WORST_KEYS}
+            if strip_rows is None:
+                for key, _ in WORST_KEYS:
+                    for rank, name in enumerate(worst[key], 1):
+                        svg = out / f"{key}_{rank}_{name}.svg"
+                        if methods[m] is None:
+                            frames, edges = frames_kept[(name, m)]
+                            svg_filmstrip(svg, frames, edges, f"{name} {m}: {key} = {results[name][m][key]:.3f}")
+                        else:
+                            extra = methods[m] + (["--svg-compare-linear"] if not straight_lines(methods[m]) else [])
+                            run_morph(cli, folder / f"{name}.source.json", folder / f"{name}.target.json",
+                                      pathlib.Path(tmp) / "morph.json", args.frames, extra + ["--svg", str(svg)])
+                        filmstrips.append({"file": _repo_relative(svg), "pair": name, "method": m, "rows": [m],
+                                           "worst": [{"metric": key, "rank": rank,
+                                                      "value": results[name][m][key]}]})
+            else:
+                chosen = {}  # pair -> the metrics it is among the worst in (insertion order)
+                for key, _ in WORST_KEYS:
+                    for rank, name in enumerate(worst[key], 1):
+                        chosen.setdefault(name, []).append({"metric": key, "rank": rank,
+                                                            "value": results[name][m][key]})
+                for name in [n.strip() for n in args.filmstrip_pairs.split(",") if n.strip()]:
+                    if name not in results:
+                        print(f"warning: --filmstrip-pairs {name}: no such pair", file=sys.stderr)
+                        continue
+                    chosen.setdefault(name, [])
+                for name, why in chosen.items():
+                    svg = out / f"strip_{name}.svg"
+                    rows, edges = [], None
+                    for label in strip_rows:
+                        r = results[name].get(label, {"error": "not run"})
+                        kept = frames_kept.get((name, label))
+                        if kept is not None:
+                            edges = kept[1]
+                        rows.append((label, _caption(r), kept[0] if kept is not None and "error" not in r else None,
+                                     set(r.get("bad_frames") or [])))
+                    if edges is None:
+                        edges = read_figure(folder / f"{name}.source.json")[1]
+                    title = f"{name} ({results[name]['_n']} vertices, {args.frames} frames)"
+                    if why:
+                        title += f": worst {m} pair by " + ", ".join(WORST_NAMES[w["metric"]] for w in why)
+                    svg_filmstrip_rows(svg, rows, edges, title)
+                    filmstrips.append({"file": _repo_relative(svg), "pair": name, "method": m, "rows": strip_rows,
+                                       "worst": why})
+            print(f"\n{len(filmstrips)} filmstrips of the worst {worst_k} pairs per metric ({m}) in {out}",
+                  file=sys.stderr)
+
+        if args.json:
+            manifest = folder / "manifest.json"
+            seed = json.loads(manifest.read_text()).get("seed") if manifest.exists() else None
+            version = subprocess.run([str(cli), "--version"], capture_output=True, text=True,
+                                     timeout=TIMEOUT_SECONDS).stdout.strip()
+            skip = {"name", "kind", "vertices", "edges", "attempts"}
+            doc = {"command": "/usr/bin/python3 scripts/motion_quality.py " + shlex.join(argv),
+                   "corpus": str(folder), "corpus_seed": seed, "build_dir": str(args.build_dir),
+                   "cli_version": version, "frames": args.frames, "ours_args": args.ours_args,
+                   "check_frames": args.check_frames, "methods": labels,
+                   "cli_methods": {m: (None if e is None else shlex.join(e)) for m, e in methods.items()},
+                   "notes": args.note, "thresholds": THRESHOLDS,
+                   "pairs": {name: {"kind": results[name]["_kind"], "vertices": results[name]["_n"],
+                                    "tags": {k: v for k, v in tags.items() if k not in skip},
+                                    **{m: results[name][m] for m in labels if m in results[name]}}
+                             for name, _, tags in corpus},
+                   "summary": summary,
+                   "targets": [{"target": text, "key": key,
+                                **{m: {"pass": ok, "value": shown} for m, (ok, shown) in per.items()}}
+                               for text, per, key in target_rows],
+                   "filmstrips": filmstrips,
+                   "runtime_s": round(time.monotonic() - started, 1)}
+            pathlib.Path(args.json).write_text(json.dumps(_finite(doc), indent=1, allow_nan=False) + "\n")
     return 0
 
 

@@ -305,3 +305,105 @@ def test_corpus_pairs_are_compatible_and_deterministic(cli, tmp_path):
     lengths = mq.edge_lengths(np.array([src, tgt]), edges)
     ratio = lengths[1] / lengths[0]
     assert np.allclose(ratio, ratio[0])  # one scale for the whole skeleton
+
+
+# ---------------------------------------------------------------------------
+# several CLI variants in one run (--cli-method), cost per frame, filmstrips with rows
+
+def _run_quality(corpus, cli, *args):
+    return subprocess.run([sys.executable, str(REPO / "scripts" / "motion_quality.py"), str(corpus),
+                           "--build-dir", str(cli.parent)] + list(args),
+                          capture_output=True, text=True, timeout=TIMEOUT_SECONDS)
+
+
+def test_cli_method_parses_label_and_arguments():
+    assert mq.cli_method("rigid=--method rigid") == ("rigid", ["--method", "rigid"])
+    assert mq.cli_method("default=") == ("default", [])
+    assert mq.cli_method("b=--weights 'uniform'") == ("b", ["--weights", "uniform"])
+    for bad in ("rigid", "=--method rigid", "x=--weights 'open"):
+        with pytest.raises(Exception):
+            mq.cli_method(bad)
+
+
+def test_straight_lines_are_recognised_by_their_options():
+    assert mq.straight_lines(["--method", "linear"])
+    assert mq.straight_lines(["--frames", "3", "--method=linear"])
+    assert not mq.straight_lines(["--method", "barycentric"])
+    assert not mq.straight_lines(["linear", "--method"])
+    assert not mq.straight_lines(None)
+
+
+def test_cli_methods_run_side_by_side_with_their_time_per_frame(cli, tmp_path):
+    corpus = tmp_path / "corpus"
+    corpus.mkdir()
+    write_pair(corpus, "square", SQUARE, rotate(SQUARE, 40) * 1.2, SQUARE_EDGES)
+    write_pair(corpus, "tree_self_turn_180", TREE, rotate(TREE, 180), TREE_EDGES)
+    out_json = tmp_path / "q.json"
+    strips = tmp_path / "strips"
+    (strips).mkdir()
+    (strips / "strip_stale.svg").write_text("<svg/>")  # an earlier run's file: removed
+    r = _run_quality(corpus, cli, "--frames", "6", "--cli-method", "plain=", "--cli-method", "uni=--weights uniform",
+                     "--json", str(out_json), "--filmstrip", str(strips), "--filmstrip-method", "uni",
+                     "--filmstrip-rows", "uni,plain,arap", "--filmstrip-worst", "1",
+                     "--filmstrip-pairs", "square", "--note", "a note")
+    assert r.returncode == 0, r.stderr
+    doc = json.loads(out_json.read_text())
+    # with --cli-method, the default families are the references only: no ours[...] rows
+    assert doc["methods"] == ["plain", "uni", "linear", "arap"]
+    assert doc["cli_methods"] == {"plain": "", "uni": "--weights uniform", "linear": "--method linear", "arap": None}
+    assert doc["notes"] == ["a note"]
+    assert doc["thresholds"]["edge_dev_median"] == 0.02
+    square = doc["pairs"]["square"]
+    assert square["plain"]["engine_weights"] == "mvc" and square["uni"]["engine_weights"] == "uniform"
+    assert square["linear"]["engine_method"] == "linear"
+    assert "engine_invalid_frames" in square["linear"]  # recognised as straight lines by its options
+    assert "engine_invalid_frames" not in square["plain"]
+    for m in ("plain", "uni", "linear"):
+        row = square[m]
+        assert row["ms_per_frame"] == pytest.approx(row["morph_ms"] / 6)
+        assert doc["summary"][m]["ms_per_frame"]["median"] >= 0
+    assert "ms_per_frame" not in square["arap"] and "ms_per_frame" not in doc["summary"]["arap"]
+    assert doc["pairs"]["tree_self_turn_180"]["tags"] == {}
+    assert [t["key"] for t in doc["targets"]] == ["edge_dev", "joint_dev", "min_size", "unevenness", "beyond",
+                                                  "self_turn", "invalid_frames"]
+    assert "| target | plain | uni | linear | arap |" in r.stdout
+    assert "Note: a note" in r.stdout
+    # one file per pair, however many metrics it is the worst in; the stale file is gone
+    files = sorted(p.name for p in strips.iterdir())
+    assert files == ["strip_square.svg", "strip_tree_self_turn_180.svg"]
+    listed = {s["pair"]: s for s in doc["filmstrips"]}
+    assert set(listed) == {"square", "tree_self_turn_180"}
+    worst = [w["metric"] for s in listed.values() for w in s["worst"]]
+    assert sorted(worst) == sorted(k for k, _ in mq.WORST_KEYS)  # each metric's worst pair once
+    assert all(s["rows"] == ["uni", "plain", "arap"] and s["method"] == "uni" for s in listed.values())
+    svg = (strips / "strip_tree_self_turn_180.svg").read_text()
+    assert svg.startswith("<svg") and svg.count("<path ") == 3 * 7
+    assert ">uni</text>" in svg and ">plain</text>" in svg and ">arap</text>" in svg
+    assert len(svg) < 200_000
+
+
+def test_cli_method_mistakes_are_refused(cli, tmp_path):
+    corpus = tmp_path / "corpus"
+    corpus.mkdir()
+    write_pair(corpus, "square", SQUARE, rotate(SQUARE, 40), SQUARE_EDGES)
+    for args, message in ((["--cli-method", "a=", "--cli-method", "a=--weights uniform"], "two methods"),
+                          (["--cli-method", "linear=--method linear"], "two methods"),
+                          (["--cli-method", "kind="], "cannot label"),
+                          (["--cli-method", "a=", "--filmstrip", str(tmp_path / "s"), "--filmstrip-rows", "a,b"],
+                           "--filmstrip-rows"),
+                          (["--methods", "ours,rigid"], "not one of"),
+                          (["--cli-method", "rigid"], "LABEL=ARGS")):
+        r = _run_quality(corpus, cli, "--frames", "4", *args)
+        assert r.returncode != 0, args
+        assert message in r.stderr, (args, r.stderr)
+
+
+def test_filmstrip_rows_mark_invalid_frames_and_failed_methods(tmp_path):
+    frames = np.array([SQUARE, rotate(SQUARE, 10), rotate(SQUARE, 20)])
+    path = tmp_path / "strip.svg"
+    mq.svg_filmstrip_rows(path, [("good", "caption <1>", frames, set()), ("bad", "c", frames, {1}),
+                                 ("failed", "failed: refused", None, None)], SQUARE_EDGES, "title & more", count=3)
+    svg = path.read_text()
+    assert svg.count("<path ") == 6  # two rows of three frames; the failed row draws none
+    assert svg.count("stroke-dasharray") == 1 and "frame 1 invalid" in svg
+    assert "caption &lt;1&gt;" in svg and "title &amp; more" in svg and "failed: refused" in svg
