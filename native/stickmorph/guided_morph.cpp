@@ -12,6 +12,7 @@
 #include "stickmorph/exact_predicates.h"
 #include "stickmorph/frame_verification.h"
 #include "stickmorph/internal/barycentric_weights.h"
+#include "stickmorph/internal/geometry.h"
 #include "stickmorph/internal/morph_topology.h"
 #include "stickmorph/internal/stopwatch.h"
 #include "stickmorph/morph_solver.h"
@@ -22,13 +23,12 @@ namespace {
 using namespace internal;
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
-// Below this sine of its smallest corner angle a figure vertex's star in
-// the guide frame starts to hand its weights back to [8]'s (step 4), and
-// at 0 (or an invalid star) it has handed them all back. About 6 degrees:
-// large enough that mean value weights near a flat corner never dominate a
-// frame, small enough that a star has to be nearly degenerate to lose any
-// rigidity.
-constexpr double kFullTrustSine = 0.1;
+// Times at which the guide's trust is sampled for smoothing (trust_at), and
+// the time over which a vertex's trust may rise from 0 to 1: a fifth of the
+// morph, several frames at any frame rate an animation uses, so a hand-over
+// is spread over several frames instead of one.
+constexpr int kTrustSamples = 40;
+constexpr double kTrustRamp = 0.2;
 
 double smoothstep01(double x) {
   x = std::clamp(x, 0.0, 1.0);
@@ -166,6 +166,13 @@ struct GuidedMorph::State {
   std::vector<std::vector<double>> wt;      // the blend at the current u
   ConvexCombinationSystem steiner_system;
   ConvexCombinationSystem full_system;
+  std::vector<double> full_trust_margin;  // per figure vertex, see trust()
+  // sample_guide(): the sampled parameters u_j, trust() of every figure
+  // vertex there (for smoothing it over time, trust_at), and the morph's own
+  // cumulative motion there if it leaves the guide (else empty).
+  std::vector<double> sample_u;
+  std::vector<std::vector<float>> trust_samples;
+  std::vector<double> own_motion;
   std::optional<MorphSolver> fallback;  // [8] itself, made on first need
   GuidedMorphStats stats;
 
@@ -185,30 +192,130 @@ struct GuidedMorph::State {
     return g;
   }
 
-  // How much of v's weights come from the guide frame g (step 4).
-  double trust(const std::vector<Vec2>& g, int v) const {
+  // The sine of the smallest corner angle at v of its star in p, or 0 if
+  // the star is not valid there (a corner not strictly positive, or
+  // positive corners winding more than once).
+  double star_margin(const std::vector<Vec2>& p, int v) const {
     const std::vector<int>& ring = topo.ring[v];
     double smallest_sine = 1, turn = 0;
     for (std::size_t j = 0; j < ring.size(); ++j) {
-      const Vec2& a = g[ring[j]];
-      const Vec2& b = g[ring[(j + 1) % ring.size()]];
-      const double ax = a[0] - g[v][0], ay = a[1] - g[v][1], bx = b[0] - g[v][0], by = b[1] - g[v][1];
+      const Vec2& a = p[ring[j]];
+      const Vec2& b = p[ring[(j + 1) % ring.size()]];
+      const double ax = a[0] - p[v][0], ay = a[1] - p[v][1], bx = b[0] - p[v][0], by = b[1] - p[v][1];
       const double cross = ax * by - ay * bx, dot = ax * bx + ay * by;
       const double la = std::hypot(ax, ay), lb = std::hypot(bx, by);
       if (!(cross > 0) || !(la > 0) || !(lb > 0)) return 0;
       smallest_sine = std::min(smallest_sine, cross / (la * lb));
       turn += std::atan2(cross, dot);
     }
-    // Positive corners that wind more than once are not a star.
-    if (std::abs(turn - 2 * 3.14159265358979323846) > 1e-6) return 0;
-    return smoothstep01(smallest_sine / kFullTrustSine);
+    if (std::abs(turn - 2 * internal::kPi) > 1e-6) return 0;
+    return smallest_sine;
   }
 
-  // Step 4: guide weights where the guide's stars are valid.
-  std::vector<Vec2> blended_frame(const std::vector<Vec2>& g) {
+  // How much of v's weights come from the guide frame g (step 4): all of
+  // them while v's star there is at least half as good as in the source
+  // and the target (a star that is thin in both ends is no warning sign),
+  // falling smoothly to none as the star degenerates. Every corner of a
+  // triangle that flips passes through sine 0, so the trust of the figure
+  // vertices around a flip goes to 0 continuously: no frame pops.
+  double trust(const std::vector<Vec2>& g, int v) const {
+    return smoothstep01(star_margin(g, v) / full_trust_margin[v]);
+  }
+
+  // The trust of v at u, smoothed over time: trust() of the frame itself
+  // (which must be 0 where v's star is invalid: only there would its mean
+  // value weights not be positive), and no more than the trust at any
+  // sampled time plus the time to it over kTrustRamp. A star that will be
+  // invalid a little later already hands its weights over gradually, so a
+  // guide that folds quickly (a stroke swinging through another) does not
+  // make the morph jump in one frame.
+  double trust_at(const std::vector<Vec2>& g, double u, int v) const {
+    double a = trust(g, v);
+    for (int j = 0; j <= kTrustSamples && a > 0; ++j)
+      a = std::min(a, double(trust_samples[j][v]) + std::abs(u - sample_u[j]) / kTrustRamp);
+    return a;
+  }
+
+  // Samples the guide at kTrustSamples + 1 times evenly spaced along the
+  // guide's motion: the trust of every figure vertex for trust_at, and,
+  // where some vertex does not trust the guide fully, the frame the morph
+  // will actually make there (unverified: it only times the morph). If any
+  // such frame exists, the morph is timed by its own motion rather than
+  // the guide's (parameter_at), since where it leaves the guide it may move
+  // faster or slower than the guide does.
+  void sample_guide() {
+    const int n = tri.figure_vertices;
+    sample_u.assign(kTrustSamples + 1, 0.0);
+    trust_samples.assign(kTrustSamples + 1, std::vector<float>(n, 1.0f));
+    std::vector<std::vector<Vec2>> guide_frames(kTrustSamples + 1);
+    for (int j = 0; j <= kTrustSamples; ++j) {
+      sample_u[j] = guide.parameter_at(double(j) / kTrustSamples, Easing::None);
+      if (j == 0 || j == kTrustSamples) continue;  // the inputs themselves
+      blend_weights(sample_u[j]);
+      guide_frames[j] = guide_frame(sample_u[j]);
+      for (int v = 0; v < n; ++v) trust_samples[j][v] = float(trust(guide_frames[j], v));
+    }
+    std::vector<std::vector<Vec2>> figure(kTrustSamples + 1);
+    figure[0].assign(tri.source.begin(), tri.source.begin() + n);
+    figure[kTrustSamples] = similarity.apply(1.0, std::vector<Vec2>(tri.target.begin(), tri.target.begin() + n));
+    bool leaves_guide = false;
+    for (int j = 1; j < kTrustSamples; ++j) {
+      bool exact = true;
+      for (int v = 0; v < n && exact; ++v) exact = trust_at(guide_frames[j], sample_u[j], v) >= 1;
+      std::vector<Vec2> p = guide_frames[j];
+      if (!exact) {
+        blend_weights(sample_u[j]);
+        bool ignored = false;
+        p = guided_frame(guide_frames[j], sample_u[j], ignored);
+        leaves_guide = true;
+      }
+      figure[j] = similarity.apply(sample_u[j], std::vector<Vec2>(p.begin(), p.begin() + n));
+    }
+    own_motion.clear();
+    if (!leaves_guide) return;
+    own_motion.assign(kTrustSamples + 1, 0.0);
+    for (int j = 1; j <= kTrustSamples; ++j) {
+      long double sum = 0;
+      for (int v = 0; v < n; ++v) {
+        const long double dx = figure[j][v][0] - figure[j - 1][v][0], dy = figure[j][v][1] - figure[j - 1][v][1];
+        sum += dx * dx + dy * dy;
+      }
+      own_motion[j] = own_motion[j - 1] + std::sqrt(double(sum / n));
+    }
+  }
+
+  // The morph parameter u at animation time t: even along the guide's
+  // motion, or along the morph's own sampled motion where it leaves the
+  // guide (sample_guide), with the easing on top.
+  double parameter_at(double t) const {
+    if (t == 0 || t == 1) return t;
+    if (own_motion.empty() || !(own_motion.back() > 0)) return guide.parameter_at(t, easing);
+    const double eased = easing == Easing::InOut ? t * t * (3 - 2 * t) : t;
+    const double goal = eased * own_motion.back();
+    const auto it = std::lower_bound(own_motion.begin(), own_motion.end(), goal);
+    const int j = std::clamp(int(it - own_motion.begin()), 1, kTrustSamples);
+    const double lo = own_motion[j - 1], hi = own_motion[j];
+    const double f = hi > lo ? std::clamp((goal - lo) / (hi - lo), 0.0, 1.0) : 0.0;
+    // Between samples, even along the guide.
+    return guide.parameter_at((j - 1 + f) / kTrustSamples, Easing::None);
+  }
+
+  // Steps 3-4: the guide frame when every figure vertex trusts it fully
+  // (then it is the solution of the positive system below, hence valid; it
+  // is checked exactly all the same), otherwise guide weights where the
+  // guide's stars are valid. `exact` tells which.
+  std::vector<Vec2> guided_frame(const std::vector<Vec2>& g, double u, bool& exact) {
+    std::vector<double> trusts(tri.figure_vertices);
+    exact = true;
+    for (int v = 0; v < tri.figure_vertices; ++v) {
+      trusts[v] = trust_at(g, u, v);
+      if (trusts[v] < 1) exact = false;
+    }
+    if (exact && first_non_positive(tri, g) < 0) return g;
+    exact = false;
     std::vector<std::vector<double>> mixed(tri.figure_vertices);
     for (int v = 0; v < tri.figure_vertices; ++v) {
-      const double a = trust(g, v);
+      const double a = trusts[v];
       mixed[v] = wt[v];
       if (a <= 0) continue;
       std::vector<double> guide_weights;
@@ -248,6 +355,19 @@ GuidedMorph::GuidedMorph(const FigureTriangulation& normalised, const StickFigur
     s.w1[v] = node_weights(tri, s.topo, tri.target, v, kind);
     s.wt[v] = s.w0[v];
   }
+  // Below this sine of its smallest corner angle a star is too thin to be
+  // trusted fully whatever the ends look like: about 6 degrees, where mean
+  // value weights near a flat corner start to dominate a row.
+  constexpr double kMostTrustMargin = 0.1;
+  s.full_trust_margin.resize(tri.figure_vertices);
+  for (int v = 0; v < tri.figure_vertices; ++v) {
+    const double ends = std::min(s.star_margin(tri.source, v), s.star_margin(tri.target, v));
+    // Both ends are valid triangulations, so ends > 0 unless it underflows.
+    s.full_trust_margin[v] = std::max(std::min(kMostTrustMargin, 0.5 * ends), 1e-12);
+  }
+  auto start = Clock::now();
+  s.sample_guide();
+  s.stats.guide_ms += ms_since(start);
   // The triangulation in output space (section 6's rotated enclosure).
   s.output = tri;
   s.output.target = similarity.apply(1.0, tri.target);
@@ -286,24 +406,19 @@ GuidedFrame GuidedMorph::frame(double t, int frame, bool verify, const std::stri
     }
     return result;
   }
-  const double u = s.guide.parameter_at(t, s.easing);
+  const double u = s.parameter_at(t);
   result.parameter = u;
   auto start = Clock::now();
   s.blend_weights(u);
   const std::vector<Vec2> g = s.guide_frame(u);
   s.stats.guide_ms += ms_since(start);
 
-  // Step 3: the guide frame itself when it is valid.
-  if (first_non_positive(s.tri, g) < 0) {
-    result.positions = s.similarity.apply(u, g);
-    result.fit = GuideFit::Exact;
-    if (!verify || defect_of(result.positions).empty()) return result;
-  }
-  // Step 4.
+  // Steps 3-4.
   start = Clock::now();
-  result.positions = s.similarity.apply(u, s.blended_frame(g));
+  bool exact = false;
+  result.positions = s.similarity.apply(u, s.guided_frame(g, u, exact));
   s.stats.solve_ms += ms_since(start);
-  result.fit = GuideFit::Blended;
+  result.fit = exact ? GuideFit::Exact : GuideFit::Blended;
   if (!verify) return result;
   std::string defect = defect_of(result.positions);
   if (defect.empty()) return result;
