@@ -30,6 +30,8 @@ ENGINE_LIMITS = {
     "min_smoothing_rounds": 0,
     "max_smoothing_rounds": 1000,
     "default_smoothing_rounds": 10,
+    # Extra whole turns of the rigid motion, either way (turns = -100 to 100).
+    "max_turns": 100,
     "max_coordinate_magnitude": 1e100,
 }
 
@@ -55,6 +57,14 @@ class BakeSettings:
     # The engine's defaults: a bake and a `stickmorph morph` without options agree.
     frame_count: int = ENGINE_LIMITS["default_frames"]  # output frames, source and target included
     frame_start: int = 1  # the frame that shows the source
+    # How the figure moves (core.MOTIONS): RIGID, the engine's default (as
+    # rigid as validity allows, at even speed); BARYCENTRIC, the paper's
+    # Floater-Gotsman morph; LINEAR, straight lines, not guaranteed valid.
+    motion: str = "RIGID"
+    # RIGID only: which way the figure turns as a whole (core.ROTATIONS) and
+    # how many extra whole turns, counter-clockwise positive.
+    rotation: str = "SHORT"
+    turns: int = 0
     steiner: str = "improved"
     weights: str = "mvc"
     enclosure_sides: int = ENGINE_LIMITS["default_enclosure_sides"]

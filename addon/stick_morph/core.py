@@ -20,7 +20,11 @@ way back to world space at eased time s is
 
 so frame 0 is the source's world vertices and the last frame the target's
 (up to floating-point roundoff), including the offset between two figures
-that lie in parallel planes, e.g. side by side at different depths.
+that lie in parallel planes, e.g. side by side at different depths. s is the
+engine frame's time for BARYCENTRIC and LINEAR (easing picks frames, see
+ease_sample_indices), and the eased time ease(k / (N - 1)) for RIGID, whose
+frames are evenly spaced along the motion with the easing on top: the
+height then moves in step with the figure.
 """
 
 from __future__ import annotations
@@ -28,7 +32,7 @@ from __future__ import annotations
 import math
 import os
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -39,6 +43,13 @@ from .common import BakeSettings, StickMorphError
 
 PLANES = ("AUTO", "XY", "XZ", "YZ")
 EASINGS = ("LINEAR", "EASE_IN_OUT")
+# The add-on's motion modes and rotation directions; the engine's names
+# (stickmorph.METHOD_NAMES, ROTATION_NAMES) are these in lower case.
+MOTIONS = ("RIGID", "BARYCENTRIC", "LINEAR")
+ROTATIONS = ("SHORT", "CCW", "CW")
+# The engine's easing of a RIGID morph for each of EASINGS
+# (stickmorph.EASING_NAMES).
+RIGID_EASINGS = {"LINEAR": "none", "EASE_IN_OUT": "in-out"}
 
 # Orthonormal (u, v) of the axis planes; n = u x v. XZ is seen from the front
 # (looking along +Y), YZ from the right (looking along -X), as in Blender's
@@ -49,8 +60,9 @@ _AXIS_PLANES = {
     "YZ": ((0.0, 1.0, 0.0), (0.0, 0.0, 1.0)),
 }
 
-# With easing, the frames are picked from a finer uniform morph of this many
-# samples per output frame interval (see ease_sample_indices).
+# With easing, BARYCENTRIC and LINEAR frames are picked from a finer uniform
+# morph of this many samples per output frame interval (see
+# ease_sample_indices).
 EASE_OVERSAMPLING = 8
 
 
@@ -87,8 +99,13 @@ class PreparedPair:
 @dataclass
 class MorphResult:
     frames_world: np.ndarray  # (N, V, 3) float64, world space
-    triangulation: dict | None
-    stats: dict
+    triangulation: dict | None  # None for LINEAR
+    stats: dict  # the engine's (stickmorph.morph's "stats"; "rigid" for RIGID)
+    motion: str = "RIGID"  # settings.motion
+    # LINEAR only: the output frames (0 to N - 1) that are not stick figures
+    # compatible with the source (they self-intersect or fold over). Empty
+    # for RIGID and BARYCENTRIC, whose every frame is verified exactly.
+    invalid_frames: list = field(default_factory=list)
 
 
 # ---------------------------------------------------------------- engine ----
@@ -246,25 +263,33 @@ def ease(t, easing: str = "LINEAR"):
     raise StickMorphError(f"unknown easing {easing!r} (choose one of {', '.join(EASINGS)})")
 
 
-def engine_frame_count(frame_count: int, easing: str) -> int:
-    """How many uniform frames the engine computes for `frame_count` output frames."""
-    if easing == "LINEAR":
+def engine_frame_count(frame_count: int, easing: str, motion: str) -> int:
+    """How many frames the engine computes for `frame_count` output frames.
+
+    RIGID: exactly frame_count, the engine eases them itself
+    (compute_morph). BARYCENTRIC and LINEAR: with easing, an oversampled
+    uniform morph to pick from (ease_sample_indices)."""
+    if easing == "LINEAR" or motion == "RIGID":
         return frame_count
     return min(engine_limits()["max_frames"], (frame_count - 1) * EASE_OVERSAMPLING + 1)
 
 
-def ease_sample_indices(frame_count: int, easing: str) -> np.ndarray:
-    """Which frame of the engine's uniform morph (engine_frame_count frames)
-    each output frame shows.
+def ease_sample_indices(frame_count: int, easing: str, motion: str) -> np.ndarray:
+    """Which frame of the engine's morph (engine_frame_count frames) each
+    output frame shows.
 
-    The engine computes frames at uniform times only, and every frame it
-    returns is verified exactly; easing therefore picks, for output frame k,
-    the engine frame nearest to the eased time ease(k / (N - 1)) from an
+    BARYCENTRIC and LINEAR: the engine computes frames at uniform times only,
+    and every frame it returns is verified exactly (LINEAR: checked, its
+    invalid frames listed); easing therefore picks, for output frame k, the
+    engine frame nearest to the eased time ease(k / (N - 1)) from an
     oversampled uniform morph, instead of interpolating between frames (which
     could make an invalid figure). Linear easing is the identity. The first
-    and last frames are always the source and target.
+    and last frames are always the source and target. RIGID: the identity,
+    the engine eases (compute_morph says why).
     """
-    m = engine_frame_count(frame_count, easing)
+    m = engine_frame_count(frame_count, easing, motion)
+    if m == frame_count:
+        return np.arange(frame_count, dtype=np.int64)
     k = np.arange(frame_count, dtype=np.float64)
     eased = ease(k / (frame_count - 1), easing)
     return np.rint(eased * (m - 1)).astype(np.int64)
@@ -371,6 +396,7 @@ def compute_morph(prepared: PreparedPair, settings: BakeSettings) -> MorphResult
     exceptions become messages naming the objects, engine_error_message).
     Raises StickMorphError, before any engine work for settings out of range."""
     frame_count, enclosure_sides, easing = settings.frame_count, settings.enclosure_sides, settings.easing
+    motion, rotation, turns = settings.motion, settings.rotation, settings.turns
     engine = load_engine()
     limits = engine.limits
     # frame_count here, not only in the engine: with easing the engine sees
@@ -384,22 +410,99 @@ def compute_morph(prepared: PreparedPair, settings: BakeSettings) -> MorphResult
                               f"{limits['max_enclosure_sides']} sides, got {enclosure_sides}")
     if easing not in EASINGS:
         raise StickMorphError(f"unknown easing {easing!r}")
-    m = engine_frame_count(frame_count, easing)
+    if motion not in MOTIONS:
+        raise StickMorphError(f"unknown motion {motion!r} (choose one of {', '.join(MOTIONS)})")
+    if rotation not in ROTATIONS:
+        raise StickMorphError(f"unknown rotation {rotation!r} (choose one of {', '.join(ROTATIONS)})")
+    # Checked whatever the motion, like the enclosure for LINEAR: a value out
+    # of range is a mistake even where it has no effect. (Blender clamps the
+    # properties to the same range; this catches scripts calling core and a
+    # module whose limits differ from common.ENGINE_LIMITS.)
+    if not (isinstance(turns, int) and -limits["max_turns"] <= turns <= limits["max_turns"]):
+        raise StickMorphError(f"the extra turns must be a whole number from {-limits['max_turns']} to "
+                              f"{limits['max_turns']}, got {turns!r}")
+    m = engine_frame_count(frame_count, easing, motion)
+    options = {}
+    if motion != "LINEAR":
+        # verify: every frame is checked exactly; easing for BARYCENTRIC
+        # picks engine frames instead of interpolating (ease_sample_indices)
+        # so that what is baked is what was verified. LINEAR takes none of
+        # these (the engine refuses an option it would ignore).
+        options.update(steiner=settings.steiner, weights=settings.weights, enclosure_sides=enclosure_sides,
+                       verify=True)
+    if motion == "RIGID":
+        # The engine spaces a rigid morph's frames evenly along the motion
+        # (by how far the figure has moved, not by time), and its in-out
+        # easing is applied to that even-speed parameter. Picking frames of a
+        # finer uniform morph, as for BARYCENTRIC, would ease the engine's
+        # time instead, which for RIGID is already reparametrised: the figure
+        # would ease by the wrong clock and cost 8x the frames. So the engine
+        # gets exactly frame_count frames and easing="in-out".
+        options.update(rotation=rotation.lower(), turns=turns, easing=RIGID_EASINGS[easing])
     try:
-        # verify: easing picks engine frames instead of interpolating
-        # (ease_sample_indices) because each of them is verified exactly.
         result = engine.morph(prepared.source_xy, prepared.target_xy, prepared.edges, frames=m,
-                              steiner=settings.steiner, weights=settings.weights,
-                              enclosure_sides=enclosure_sides, method="barycentric", verify=True)
+                              method=motion.lower(), **options)
     except (engine.StickMorphError, engine.InternalError) as e:
         raise StickMorphError(engine_error_message(e, prepared.source_name, prepared.target_name)) from e
-    indices = ease_sample_indices(frame_count, easing)
+    indices = ease_sample_indices(frame_count, easing, motion)
     frames_xy = np.asarray(result["frames"])[indices]
-    times = np.asarray(result["times"])[indices]
+    if motion == "RIGID":
+        # The engine's times are k / (N - 1); the figure is at the eased
+        # fraction of its motion, and so is its height.
+        times = ease(np.asarray(result["times"]), easing)
+    else:
+        times = np.asarray(result["times"])[indices]
     heights = ((1.0 - times)[:, None] * prepared.source_h[None, :]
                + times[:, None] * prepared.target_h[None, :])
     frames_world = unproject(frames_xy, heights, prepared.plane)
-    return MorphResult(frames_world, result["triangulation"], result["stats"])
+    stats = result["stats"]
+    invalid = []
+    if motion == "LINEAR":
+        bad = set(int(k) for k in stats.get("invalid_frames", ()))
+        invalid = [k for k, index in enumerate(indices.tolist()) if index in bad]
+    return MorphResult(frames_world, result["triangulation"], stats, motion, invalid)
+
+
+def frame_list(frames, limit: int = 12) -> str:
+    """Frame numbers as ranges: [3, 4, 5, 9] -> "3-5, 9"; after `limit`
+    ranges, "and N more" (frames)."""
+    runs = []
+    for frame in sorted(frames):
+        if runs and frame == runs[-1][1] + 1:
+            runs[-1][1] = frame
+        else:
+            runs.append([frame, frame])
+    shown = [f"{a}-{b}" if b > a else f"{a}" for a, b in runs[:limit]]
+    rest = sum(b - a + 1 for a, b in runs[limit:])
+    return ", ".join(shown) + (f" and {rest} more" if rest else "")
+
+
+def motion_summary(morph: MorphResult, frame_start: int = 1) -> tuple[str, str]:
+    """(short, long): what the motion did, for the panel's last-bake box (a
+    line of about 24 characters) and the bake's report.
+
+    RIGID: how many inner frames (the ends are the figures themselves) are
+    the rigid guide or follow it where it is valid, and how many fell back
+    to the barycentric frame (stats["rigid"]["guide_frames"]). LINEAR: the
+    frames (scene frame numbers) that are not valid, if any."""
+    count = len(morph.frames_world)
+    if morph.motion == "RIGID":
+        guide = (morph.stats.get("rigid") or {}).get("guide_frames") or {}
+        follow = int(guide.get("exact", 0)) + int(guide.get("blended", 0))
+        inner = follow + int(guide.get("barycentric", 0))
+        if inner == 0:  # two frames: the figures themselves
+            return "Rigid", "rigid"
+        text = f"rigid: {follow}/{inner} frames follow the rigid guide"
+        if inner > follow:
+            text += f" ({inner - follow} fall back to barycentric where it is not valid)"
+        return f"Rigid guide: {follow}/{inner}", text
+    if morph.motion == "LINEAR":
+        if not morph.invalid_frames:
+            return "Linear: all valid", "linear: every frame is valid"
+        frames = [frame_start + k for k in morph.invalid_frames]
+        return (f"Linear: {len(frames)} invalid",
+                f"linear: {len(frames)} of {count} frames cross or fold the figure (frames {frame_list(frames)})")
+    return "Barycentric", "barycentric"
 
 
 def triangulation_world(triangulation: dict, prepared: PreparedPair) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -154,7 +154,7 @@ _clear_status = None
 
 
 class STICKMORPH_OT_bake(bpy.types.Operator):
-    """Bake a self-intersection-free morph between two edge meshes (source, then target active) into a new object with shape keys"""
+    """Bake a morph between two edge meshes (source, then target active) into a new object with shape keys, free of self-intersection unless Motion is Linear"""
     bl_idname = "object.stick_morph_bake"
     bl_label = "Bake Stick Morph"
     bl_options = {"REGISTER", "UNDO"}
@@ -249,6 +249,7 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
         progress.stage("build", 100)
         milliseconds = (time.perf_counter() - started) * 1000.0
         steiner = int(morph.stats.get("steiner_vertices", 0))
+        motion_short, motion_text = core.motion_summary(morph, settings.frame_start)
         scene_settings = getattr(context.scene, "stick_morph", None)
         if scene_settings is not None:
             scene_settings.last_result = result.name
@@ -256,8 +257,18 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
             scene_settings.last_steiner = steiner
             scene_settings.last_frames = count
             scene_settings.last_milliseconds = milliseconds
+            scene_settings.last_motion = motion_short
         text = (f"Stick Morph: '{result.name}': {len(prepared.source_xy)} vertices, "
-                f"{steiner} Steiner vertices, {count} frames, {milliseconds:.0f} ms")
+                f"{steiner} Steiner vertices, {count} frames, {milliseconds:.0f} ms; {motion_text}")
+        if morph.invalid_frames:
+            # LINEAR is the baseline, not guaranteed valid: the bake keeps
+            # its frames and says which of them are not stick figures
+            # compatible with the source (the engine checks every frame;
+            # core.compute_morph maps them to output frames).
+            frames = [settings.frame_start + k for k in morph.invalid_frames]
+            self.report({"WARNING"},
+                        f"Stick Morph: the Linear motion crosses or folds the figure in {len(frames)} of "
+                        f"{count} frames: {core.frame_list(frames)} (Rigid and Barycentric never do)")
         self.report({"INFO"}, f"{text} ({progress.summary()})")
         show_in_status_bar(context, text)
         return {"FINISHED"}

@@ -18,9 +18,9 @@ from . import common
 # The options copied from the preferences into an operator call (when the
 # caller did not set them) and into the scene settings (Load Defaults): the
 # fields of common.BakeSettings but frame_start, which has no preference.
-OPTION_NAMES = ("frame_count", "steiner", "weights", "enclosure_sides", "plane", "easing",
-                "renderable", "tube_radius", "show_triangulation", "planarity_tolerance",
-                "set_frame_range")
+OPTION_NAMES = ("motion", "rotation", "turns", "frame_count", "steiner", "weights", "enclosure_sides",
+                "plane", "easing", "renderable", "tube_radius", "show_triangulation",
+                "planarity_tolerance", "set_frame_range")
 
 # The properties' defaults, defined once (common.BakeSettings).
 _DEFAULTS = common.BakeSettings()
@@ -41,6 +41,36 @@ def option_properties():
     """Fresh property definitions for the bake options (a dict for __annotations__)."""
     defaults = _DEFAULTS
     return {
+        "motion": EnumProperty(
+            name="Motion", description="How the figure moves from the source to the target",
+            items=(("RIGID", "Rigid",
+                    "As rigid as possible: edges keep their lengths wherever they can, the figure turns "
+                    "as a whole and moves at even speed; it never crosses itself"),
+                   ("BARYCENTRIC", "Barycentric",
+                    "The paper's morph (Floater-Gotsman): it never crosses itself, but edges stretch "
+                    "and shrink and the speed is uneven"),
+                   ("LINEAR", "Linear",
+                    "Every vertex on a straight line: the simplest motion, but the figure may cross "
+                    "itself (the bake warns, naming the frames)")),
+            default=defaults.motion, options=set()),
+        "rotation": EnumProperty(
+            name="Rotation",
+            description="Which way the figure turns as a whole on its way to the target "
+                        "(Rigid motion only)",
+            # Item names of at most 11 characters: "Counterclockwise" is cut
+            # in the sidebar's value column at 3.4's default width.
+            items=(("SHORT", "Short Way", "The smaller turn, whichever way that is"),
+                   ("CCW", "Left (CCW)",
+                    "Counterclockwise as the plane is seen, even when that is the long way round"),
+                   ("CW", "Right (CW)",
+                    "Clockwise as the plane is seen, even when that is the long way round")),
+            default=defaults.rotation, options=set()),
+        "turns": IntProperty(
+            name="Extra Turns",
+            description="Whole turns added to the figure's rotation, positive counterclockwise, negative "
+                        f"clockwise; Rigid motion only ({-_LIMITS['max_turns']} to {_LIMITS['max_turns']})",
+            default=defaults.turns, options=set(), min=-_LIMITS["max_turns"], max=_LIMITS["max_turns"],
+            soft_min=-10, soft_max=10),
         "frame_count": IntProperty(
             name="Frames",
             description="Number of frames of the morph, source and target included "
@@ -48,20 +78,22 @@ def option_properties():
             default=defaults.frame_count, options=set(), min=_LIMITS["min_frames"], max=_LIMITS["max_frames"],
             soft_max=1000),
         "steiner": EnumProperty(
-            name="Steiner", description="How the compatible triangulation places Steiner vertices",
+            name="Steiner",
+            description="How the compatible triangulation places Steiner vertices (not for Linear motion)",
             items=(("improved", "Improved", "Fewest Steiner vertices (section 4.2 and further)"),
                    ("sg2001", "SG2001", "The reduced spiderweb of Surazhsky & Gotsman 2001"),
                    ("aronov", "Aronov", "The universal spiderweb of Aronov, Seidel & Souvaine")),
             default=defaults.steiner, options=set()),
         "weights": EnumProperty(
-            name="Weights", description="Convex-combination weights of the Floater-Gotsman morph",
+            name="Weights",
+            description="Convex-combination weights of the Floater-Gotsman morph (not for Linear motion)",
             items=(("mvc", "Mean Value", "Mean value coordinates"),
                    ("uniform", "Uniform", "Uniform (Tutte) weights"),
                    ("floater", "Floater", "Floater's shape-preserving weights")),
             default=defaults.weights, options=set()),
         "enclosure_sides": IntProperty(
             name="Enclosure Sides",
-            description="Sides of the regular polygon enclosing both figures "
+            description="Sides of the regular polygon enclosing both figures; not for Linear motion "
                         f"({_LIMITS['min_enclosure_sides']} to {_LIMITS['max_enclosure_sides']})",
             default=defaults.enclosure_sides, options=set(), min=_LIMITS["min_enclosure_sides"],
             max=_LIMITS["max_enclosure_sides"], soft_max=64),
@@ -73,8 +105,8 @@ def option_properties():
                    ("YZ", "YZ", "The YZ plane (seen from the right)")),
             default=defaults.plane, options=set()),
         "easing": EnumProperty(
-            name="Easing", description="Time remap of the morph",
-            items=(("LINEAR", "Linear", "Constant speed"),
+            name="Easing", description="How the speed changes over the morph",
+            items=(("LINEAR", "Linear", "Constant speed (for Rigid motion: even speed along the motion)"),
                    ("EASE_IN_OUT", "Ease In-Out", "Slow at the start and the end (smoothstep)")),
             default=defaults.easing, options=set()),
         "renderable": BoolProperty(
@@ -86,7 +118,7 @@ def option_properties():
         "show_triangulation": BoolProperty(
             name="Show Triangulation",
             description="Add a wireframe helper object with the compatible triangulation "
-                        "(source shape, with a Target shape key)",
+                        "(source shape, with a Target shape key; not for Linear motion)",
             default=defaults.show_triangulation, options=set()),
         "planarity_tolerance": FloatProperty(
             name="Planarity Tolerance",
@@ -136,6 +168,8 @@ class StickMorphSceneSettings(bpy.types.PropertyGroup):
         "last_vertices": IntProperty(name="Vertices", options=set()),
         "last_steiner": IntProperty(name="Steiner Vertices", options=set()),
         "last_frames": IntProperty(name="Frames", options=set()),
+        # What the motion did (core.motion_summary), e.g. "Rigid guide: 28/28".
+        "last_motion": StringProperty(name="Motion", options=set()),
         "last_milliseconds": FloatProperty(name="Milliseconds", options=set()),
     }
 

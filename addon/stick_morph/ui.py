@@ -20,20 +20,44 @@ from .preferences import OPTION_NAMES
 # full: "Weights" and "Steiner" were, "Enclos…" (Enclosure Sides) was not
 # (measured from a screenshot under Xvfb, tests/blender/test_ui.py checks it).
 SPLIT_LABEL_CHARS = 7
+# Longest value of a drop-down in such a row: "Barycentric" and "Ease In-Out"
+# show in full, "Counterclockwise" was cut (measured the same way).
+SPLIT_VALUE_CHARS = 11
 # Longest text of a row without split (a check box or number field across
 # the panel, about 180 px).
 FULL_LABEL_CHARS = 22
 
 # (property, label) of the rows: split rows in the main panel and in
 # Advanced, then the full-width rows. Labels None use the property's name.
-MAIN_SPLIT = (("frame_start", "Start"), ("frame_count", "Frames"), ("plane", "Plane"), ("easing", "Easing"))
+# Motion is the headline option: the first row under the pair.
+MAIN_SPLIT = (("motion", "Motion"), ("frame_start", "Start"), ("frame_count", "Frames"), ("plane", "Plane"),
+              ("easing", "Easing"))
 MAIN_FULL = (("renderable", None), ("tube_radius", None), ("show_triangulation", None),
              ("set_frame_range", None))
-ADVANCED_SPLIT = (("steiner", "Steiner"), ("weights", "Weights"))
+# "Rotation" (8) and "Extra Turns" are too long for a split row.
+ADVANCED_SPLIT = (("rotation", "Rotate"), ("turns", "Turns"), ("steiner", "Steiner"), ("weights", "Weights"))
 ADVANCED_FULL = (("enclosure_sides", None),)
 # Too long for any row: a label line above a field without text.
 ADVANCED_LABELLED = (("planarity_tolerance", "Planarity tolerance:"),)
 ADVANCED = tuple(name for name, _ in ADVANCED_SPLIT + ADVANCED_FULL + ADVANCED_LABELLED)
+
+# Options that only some motions use: drawn greyed out (row.active = False,
+# still editable, as Blender greys out settings that have no effect) when
+# the data's motion is not one of them.
+RIGID_ONLY = ("rotation", "turns")
+NOT_LINEAR = ("steiner", "weights", "enclosure_sides", "show_triangulation")
+
+
+def row_active(data, name):
+    """Whether the option `name` has an effect with the other options of data."""
+    motion = getattr(data, "motion", "RIGID")
+    if name in RIGID_ONLY:
+        return motion == "RIGID"
+    if name in NOT_LINEAR:
+        return motion != "LINEAR"
+    if name == "tube_radius":
+        return bool(getattr(data, "renderable", True))
+    return True
 
 
 def _wrap(context, text):
@@ -90,14 +114,15 @@ def draw_rows(layout, data, split_rows, full_rows, labelled_rows=()):
     column.use_property_split = True
     column.use_property_decorate = False
     for name, label in split_rows:
-        column.prop(data, name, text=label)
+        row = column.row()
+        row.active = row_active(data, name)
+        row.prop(data, name, text=label)
     column = layout.column()
     column.use_property_split = False
     column.use_property_decorate = False
     for name, label in full_rows:
         row = column.row()
-        if name == "tube_radius":
-            row.active = bool(getattr(data, "renderable", True))
+        row.active = row_active(data, name)
         row.prop(data, name, **({} if label is None else {"text": label}))
     for name, label in labelled_rows:
         column.label(text=label)
@@ -145,6 +170,8 @@ class VIEW3D_PT_stick_morph(bpy.types.Panel):
             column.label(text=f"Last: {settings.last_result}")
             column.label(text=f"{settings.last_vertices} vertices, {settings.last_steiner} Steiner")
             column.label(text=f"{settings.last_frames} frames, {settings.last_milliseconds:.0f} ms")
+            if settings.last_motion:
+                column.label(text=settings.last_motion)
 
 
 class VIEW3D_PT_stick_morph_advanced(bpy.types.Panel):

@@ -13,9 +13,15 @@ def bake(**kwargs):
     return bpy.context.view_layer.objects.active
 
 
-def expected_frames(addon, source, target, frame_count, easing="LINEAR", plane="AUTO", **options):
+def expected_frames(addon, source, target, frame_count, easing="LINEAR", plane="AUTO", motion="RIGID", **options):
     """The engine's morph mapped to world space, computed here from the meshes'
-    world coordinates and the engine directly (not through compute_morph)."""
+    world coordinates and the engine directly (not through compute_morph).
+
+    RIGID (the default motion): exactly frame_count engine frames, the
+    engine easing them ("in-out"); the height between the figures' planes
+    moves with the eased time. BARYCENTRIC and LINEAR: with easing, frames
+    picked from an oversampled uniform morph at the eased times. options go
+    to stickmorph.morph as they are (engine names: rotation="ccw", ...)."""
     core = addon.core
     engine = core.load_engine()
     src, tgt = world_coords(source), world_coords(target)
@@ -27,13 +33,19 @@ def expected_frames(addon, source, target, frame_count, easing="LINEAR", plane="
     assert np.allclose(np.cross(u, v), n, atol=1e-12)
     src_xy = np.stack([(src - o) @ u, (src - o) @ v], axis=1)
     tgt_xy = np.stack([(tgt - o) @ u, (tgt - o) @ v], axis=1)
-    m = frame_count if easing == "LINEAR" else (frame_count - 1) * core.EASE_OVERSAMPLING + 1
-    morph = engine.morph(src_xy, tgt_xy, edges, frames=m, **options)
     k = np.arange(frame_count) / (frame_count - 1)
     eased = k if easing == "LINEAR" else k * k * (3 - 2 * k)
-    index = np.rint(eased * (m - 1)).astype(int)
-    frames = morph["frames"][index]
-    times = morph["times"][index]
+    if motion == "RIGID":
+        morph = engine.morph(src_xy, tgt_xy, edges, frames=frame_count, method="rigid",
+                             easing="in-out" if easing == "EASE_IN_OUT" else None, **options)
+        frames = morph["frames"]
+        times = eased
+    else:
+        m = frame_count if easing == "LINEAR" else (frame_count - 1) * core.EASE_OVERSAMPLING + 1
+        morph = engine.morph(src_xy, tgt_xy, edges, frames=m, method=motion.lower(), **options)
+        index = np.rint(eased * (m - 1)).astype(int)
+        frames = morph["frames"][index]
+        times = morph["times"][index]
     hs, ht = (src - o) @ n, (tgt - o) @ n
     heights = (1 - times)[:, None] * hs + times[:, None] * ht
     world = o + frames[..., :1] * u + frames[..., 1:] * v + heights[..., None] * n
@@ -45,13 +57,17 @@ def figure_size(source, target):
     return float(np.linalg.norm(both.max(axis=0) - both.min(axis=0)))
 
 
+@pytest.mark.parametrize("motion", ["RIGID", "BARYCENTRIC"])
 @pytest.mark.parametrize("key", sorted(PAIRS))
-def test_bake_matches_engine_in_world_space(scene, addon, key):
+def test_bake_matches_engine_in_world_space(scene, addon, key, motion):
+    """RIGID, the default (not passed), and BARYCENTRIC, what every bake was
+    before the motion option: the frames are the engine's with that method."""
     source, target = make_pair(key)
     before_source = (world_coords(source).tobytes(), tuple(map(tuple, source.matrix_world)))
     before_target = (world_coords(target).tobytes(), tuple(map(tuple, target.matrix_world)))
     frame_count, frame_start = 12, 5
-    result = bake(frame_count=frame_count, frame_start=frame_start)
+    result = bake(frame_count=frame_count, frame_start=frame_start,
+                  **({} if motion == "RIGID" else {"motion": motion}))
 
     # The result is a new object, active and the only one selected.
     assert result is not None and result not in (source, target)
@@ -72,7 +88,9 @@ def test_bake_matches_engine_in_world_space(scene, addon, key):
     fitted = addon.core.fit_plane(world_coords(source), world_coords(target), "AUTO")
     assert abs(abs(float(fitted.normal @ normal)) - 1.0) < 1e-9
 
-    expected, frames_xy, src_xy, edges, _ = expected_frames(addon, source, target, frame_count)
+    expected, frames_xy, src_xy, edges, morph = expected_frames(addon, source, target, frame_count,
+                                                                motion=motion)
+    assert morph["stats"]["method"] == motion.lower()
     size = figure_size(source, target)
     tolerance = 1e-5 * size
     engine = addon.core.load_engine()
@@ -135,11 +153,17 @@ def test_renderable_geometry_and_no_runtime_dependencies(scene, addon):
     assert result.animation_data is None or result.animation_data.drivers[:] == []
 
 
-def test_ease_in_out(scene, addon):
+@pytest.mark.parametrize("motion", ["RIGID", "BARYCENTRIC"])
+def test_ease_in_out(scene, addon, motion):
+    # RIGID: the engine's easing="in-out" on its even-speed frames;
+    # BARYCENTRIC: frames picked from an oversampled uniform morph.
     source, target = make_pair("polygon_dangling")
     frame_count = 9
-    result = bake(frame_count=frame_count, frame_start=1, easing="EASE_IN_OUT")
-    expected, *_ = expected_frames(addon, source, target, frame_count, easing="EASE_IN_OUT")
+    result = bake(frame_count=frame_count, frame_start=1, easing="EASE_IN_OUT", motion=motion)
+    expected, _, _, _, morph = expected_frames(addon, source, target, frame_count, easing="EASE_IN_OUT",
+                                               motion=motion)
+    assert len(morph["frames"]) == (frame_count if motion == "RIGID"
+                                    else (frame_count - 1) * addon.core.EASE_OVERSAMPLING + 1)
     tolerance = 1e-5 * figure_size(source, target)
     for k in range(frame_count):
         assert np.abs(evaluated_world(result, 1 + k) - expected[k]).max() <= tolerance, k

@@ -14,6 +14,7 @@ import numpy as np
 from mathutils import Matrix
 
 from conftest import make_pair, select, snapshot, world_coords, evaluated_world
+from test_bake import expected_frames
 
 
 def call_raw(idname, **kwargs):
@@ -134,3 +135,41 @@ def test_redo_uses_the_resolved_names_not_the_selection(scene, addon):
     select(bpy.data.objects["Target"])  # (undo replaced the objects) a selection that would not resolve
     redone = bake_with_undo(frame_count=5, source=names[0], target=names[1])
     check_in_place(redone, source_world, target_world, 1, 5)
+
+
+def test_redo_with_another_motion(scene, addon):
+    """Adjust Last Operation with Motion changed (RIGID, the default, to
+    BARYCENTRIC, then back to RIGID turning the other way): each redo is the
+    engine's morph with that method, in place, and replaces the last one."""
+    source, target = parented_pair()
+    source_world, target_world = world_coords(source), world_coords(target)
+    size = float(np.linalg.norm(np.ptp(np.vstack([source_world, target_world]), axis=0)))
+    bpy.ops.ed.undo_push(message="pair")
+    first = bake_with_undo(frame_count=8)
+    name = first.name
+    last = bpy.context.window_manager.operators[-1]
+    properties = {key: getattr(last.properties, key) for key in last.properties.bl_rna.properties.keys()
+                  if key != "rna_type"}
+    assert properties["motion"] == "RIGID" and properties["rotation"] == "SHORT"
+    rigid, *_ = expected_frames(addon, source, target, 8)
+    barycentric, *_ = expected_frames(addon, source, target, 8, motion="BARYCENTRIC")
+    the_long_way, _, _, _, long_morph = expected_frames(addon, source, target, 8, rotation="cw")
+    assert long_morph["stats"]["rigid"]["similarity"]["angle_degrees"] < -180  # the pair turns +0.4 rad
+    for expected in (barycentric, the_long_way):
+        assert np.abs(expected[3] - rigid[3]).max() > 1e-3 * size  # the motions differ
+
+    def check(result, expected):
+        assert result.name == name
+        assert len([o for o in bpy.data.objects if o.get("stick_morph_role") == "result"]) == 1
+        check_in_place(result, source_world, target_world, 1, 8)
+        for k in range(8):
+            assert np.abs(evaluated_world(result, 1 + k) - expected[k]).max() <= 1e-5 * size, k
+
+    check(first, rigid)
+    assert call_raw("ed.undo") == {"FINISHED"}
+    assert call_raw("object.stick_morph_bake", **dict(properties, motion="BARYCENTRIC")) == {"FINISHED"}
+    check(bpy.context.view_layer.objects.active, barycentric)
+    assert bpy.context.scene.stick_morph.last_motion == "Barycentric"
+    assert call_raw("ed.undo") == {"FINISHED"}
+    assert call_raw("object.stick_morph_bake", **dict(properties, rotation="CW")) == {"FINISHED"}
+    check(bpy.context.view_layer.objects.active, the_long_way)

@@ -80,3 +80,8 @@ def test_property_ranges_and_help_texts_are_the_engines_limits(scene, addon, add
             least, most = limits[f"min_{option}"], limits[f"max_{option}"]
             assert (prop.hard_min, prop.hard_max) == (least, most), (where, name)
             assert f"({least} to {most})" in prop.description, (where, name, prop.description)
+        # The rigid motion's extra turns, either way.
+        prop = properties["turns"]
+        most = limits["max_turns"]
+        assert (prop.hard_min, prop.hard_max, prop.default) == (-most, most, 0), where
+        assert f"({-most} to {most})" in prop.description, (where, prop.description)

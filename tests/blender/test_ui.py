@@ -8,7 +8,7 @@ import pytest
 from conftest import addon_import, make_mesh_object, make_pair, select, POLYLINE
 
 SETTINGS_ONLY = ("source", "target", "last_result", "last_vertices", "last_steiner", "last_frames",
-                 "last_milliseconds")
+                 "last_milliseconds", "last_motion")
 
 
 def test_no_setting_is_animatable(scene, addon, addon_name):
@@ -25,7 +25,7 @@ def test_no_setting_is_animatable(scene, addon, addon_name):
                 continue
             assert not prop.is_animatable, f"{where}: {prop.identifier} is animatable"
             checked += 1
-    assert checked >= 11 * 3
+    assert checked >= 14 * 3
 
 
 def test_layout_shows_every_option_once_with_short_labels(addon):
@@ -38,12 +38,18 @@ def test_layout_shows_every_option_once_with_short_labels(addon):
     for name, label in ui.MAIN_SPLIT + ui.ADVANCED_SPLIT:
         text = label or settings[name].name
         assert len(text) <= ui.SPLIT_LABEL_CHARS, f"{name}: '{text}' is cut in a split row at the default width"
+        # A drop-down's values fit its field too.
+        for item in getattr(settings[name], "enum_items", ()):
+            assert len(item.name) <= ui.SPLIT_VALUE_CHARS, f"{name}: '{item.name}' is cut at the default width"
     for name, label in ui.MAIN_FULL + ui.ADVANCED_FULL + ui.ADVANCED_LABELLED:
         text = label or settings[name].name
         assert len(text) <= ui.FULL_LABEL_CHARS, f"{name}: '{text}'"
-    # The expert options are only in Advanced.
-    assert set(ui.ADVANCED) == {"steiner", "weights", "enclosure_sides", "planarity_tolerance"}
+    # The expert options are only in Advanced; Motion, the headline option,
+    # is the first row of the main panel.
+    assert set(ui.ADVANCED) == {"rotation", "turns", "steiner", "weights", "enclosure_sides",
+                                "planarity_tolerance"}
     assert not set(ui.ADVANCED) & {name for name, _ in ui.MAIN_SPLIT + ui.MAIN_FULL}
+    assert ui.MAIN_SPLIT[0][0] == "motion"
 
 
 def test_advanced_is_a_closed_sub_panel(addon):
@@ -121,10 +127,12 @@ class FakeLayout:
         self.active = True
 
     def _child(self, *args, **kwargs):
-        # Sub-layouts start with their parent's flags, as in Blender.
+        # Sub-layouts start with their parent's flags, as in Blender (an
+        # inactive layout's children are drawn inactive too).
         child = FakeLayout(self.record)
         child.use_property_split = self.use_property_split
         child.use_property_decorate = self.use_property_decorate
+        child.active = self.active
         return child
 
     column = row = box = split = _child
@@ -138,6 +146,7 @@ class FakeLayout:
     def prop(self, data, name, text=None, **kwargs):
         assert name in data.bl_rna.properties, f"no property {name} on {data}"
         self.record.append(("prop", name, text, self.use_property_split, self.use_property_decorate))
+        self.record.append(("active", name, bool(self.active)))
 
     def operator(self, idname, **kwargs):
         module, name = idname.split(".")
@@ -227,3 +236,43 @@ def test_redo_panel_and_preferences_draw(scene, addon, addon_name):
 
     type(prefs).draw(Wrapped(), bpy.context)
     assert sorted(r[1] for r in record if r[0] == "prop") == sorted(preferences.OPTION_NAMES)
+
+
+def active_rows(record):
+    return {r[1]: r[2] for r in record if r[0] == "active"}
+
+
+@pytest.mark.parametrize("motion", ["RIGID", "BARYCENTRIC", "LINEAR"])
+def test_options_a_motion_does_not_use_are_greyed_out(scene, addon, motion):
+    ui = addon_import("ui")
+    settings = scene.stick_morph
+    settings.motion = motion
+    settings.renderable = True
+    make_pair("tree")
+    active = active_rows(draw(bpy.types.VIEW3D_PT_stick_morph, bpy.context)
+                         + draw(bpy.types.VIEW3D_PT_stick_morph_advanced, bpy.context))
+    greyed = {name for name, on in active.items() if not on}
+    expected = {"RIGID": set(), "BARYCENTRIC": {"rotation", "turns"},
+                "LINEAR": {"rotation", "turns", "steiner", "weights", "enclosure_sides", "show_triangulation"}}
+    assert greyed == expected[motion]
+    assert set(ui.RIGID_ONLY) == {"rotation", "turns"}
+    # The redo panel greys out the same rows, from the operator's own motion.
+    op = bpy.context.window_manager.operator_properties_last("object.stick_morph_bake")
+    saved = op.motion
+    op.motion = motion
+    try:
+        record = []
+        ui.draw_operator(FakeLayout(record), op)
+    finally:
+        op.motion = saved
+    assert {name for name, on in active_rows(record).items() if not on} == expected[motion]
+
+
+def test_the_last_bake_box_says_what_the_motion_did(scene, addon):
+    make_pair("tree")
+    assert bpy.ops.object.stick_morph_bake(frame_count=6) == {"FINISHED"}
+    labels = [r[1] for r in draw(bpy.types.VIEW3D_PT_stick_morph, bpy.context) if r[0] == "label"]
+    assert scene.stick_morph.last_motion.startswith("Rigid guide: ") and scene.stick_morph.last_motion.endswith("/4")
+    assert labels[-1] == scene.stick_morph.last_motion
+    # One line of the box at the default width (ui._wrap: about 24 characters).
+    assert len(labels[-1]) <= 24

@@ -83,6 +83,14 @@ def test_bake_settings_defaults_and_frozen():
     settings = core.BakeSettings()
     assert core.BakeSettings is common.BakeSettings
     assert (settings.frame_count, settings.frame_start, settings.easing, settings.plane) == (50, 1, "LINEAR", "AUTO")
+    # The engine's default motion, turning the short way with no extra turns.
+    assert (settings.motion, settings.rotation, settings.turns) == ("RIGID", "SHORT", 0)
+    engine = core.load_engine()
+    assert settings.motion.lower() == engine.METHOD_NAMES[0] == "rigid"
+    assert tuple(m.lower() for m in core.MOTIONS) == engine.METHOD_NAMES
+    assert tuple(r.lower() for r in core.ROTATIONS) == engine.ROTATION_NAMES
+    assert set(core.RIGID_EASINGS) == set(core.EASINGS)
+    assert sorted(core.RIGID_EASINGS.values()) == sorted(engine.EASING_NAMES)
     assert settings.planarity_tolerance == 1e-4
     # One bake's options cannot change under it.
     with pytest.raises(dataclasses.FrozenInstanceError):
@@ -96,6 +104,14 @@ def test_bake_settings_defaults_and_frozen():
     ({"frame_count": 5, "enclosure_sides": 2}, "3 to 1000 sides, got 2"),
     ({"frame_count": 5, "enclosure_sides": 1001}, "3 to 1000 sides, got 1001"),
     ({"easing": "BOUNCE"}, "unknown easing 'BOUNCE'"),
+    ({"motion": "SPLINE"}, "unknown motion 'SPLINE'"),
+    ({"motion": "rigid"}, "unknown motion 'rigid'"),  # the add-on's names are upper case
+    ({"rotation": "LEFT"}, "unknown rotation 'LEFT'"),
+    ({"turns": 101}, "whole number from -100 to 100, got 101"),
+    ({"turns": -101}, "whole number from -100 to 100, got -101"),
+    ({"turns": 1.5}, "whole number from -100 to 100, got 1.5"),
+    # Out of range is refused whatever the motion, like the enclosure for LINEAR.
+    ({"turns": 1000, "motion": "BARYCENTRIC"}, "got 1000"),
 ])
 def test_compute_morph_refuses_settings_out_of_range(changes, fragment):
     # Blender clamps the operator's frame_count and enclosure_sides to their
@@ -170,9 +186,15 @@ def test_edge_sets_and_easing():
     assert np.array_equal(core.ease(t, "LINEAR"), t)
     eased = core.ease(t, "EASE_IN_OUT")
     assert eased[0] == 0 and eased[-1] == 1 and np.all(np.diff(eased) > 0)
-    index = core.ease_sample_indices(11, "EASE_IN_OUT")
-    assert index[0] == 0 and index[-1] == core.engine_frame_count(11, "EASE_IN_OUT") - 1
-    assert np.array_equal(core.ease_sample_indices(7, "LINEAR"), np.arange(7))
+    for motion in ("BARYCENTRIC", "LINEAR"):
+        index = core.ease_sample_indices(11, "EASE_IN_OUT", motion)
+        assert core.engine_frame_count(11, "EASE_IN_OUT", motion) == 10 * core.EASE_OVERSAMPLING + 1
+        assert index[0] == 0 and index[-1] == core.engine_frame_count(11, "EASE_IN_OUT", motion) - 1
+        assert np.array_equal(core.ease_sample_indices(7, "LINEAR", motion), np.arange(7))
+    # RIGID: the engine eases, exactly the output frames are computed.
+    for easing in core.EASINGS:
+        assert core.engine_frame_count(11, easing, "RIGID") == 11
+        assert np.array_equal(core.ease_sample_indices(11, easing, "RIGID"), np.arange(11))
 
 
 # ------------------------------------------------------------ the morph ----
@@ -226,15 +248,180 @@ def test_morph_starts_at_the_source_and_ends_at_the_target_in_world_space():
     assert step[0] < 0.7 * linear_step[0] and step[3] > 1.2 * linear_step[3]
 
 
-def test_the_settings_reach_the_engine():
+@pytest.mark.parametrize("motion, changes", [
+    ("BARYCENTRIC", {"weights": "uniform"}), ("BARYCENTRIC", {"enclosure_sides": 9}),
+    ("BARYCENTRIC", {"steiner": "aronov"}), ("BARYCENTRIC", {"motion": "RIGID"}),
+    ("BARYCENTRIC", {"motion": "LINEAR"}),
+    ("RIGID", {"rotation": "CW"}), ("RIGID", {"rotation": "CCW", "turns": 1}), ("RIGID", {"turns": -1}),
+    ("RIGID", {"easing": "EASE_IN_OUT"}),
+])
+def test_the_settings_reach_the_engine(motion, changes):
+    # (The tree's short way is counterclockwise: CCW alone would change nothing.)
     prepared = prepare()
-    base = core.compute_morph(prepared, core.BakeSettings(frame_count=5))
-    for changes in ({"weights": "uniform"}, {"enclosure_sides": 9}, {"steiner": "aronov"}):
-        other = core.compute_morph(prepared, core.BakeSettings(frame_count=5, **changes))
-        assert np.abs(other.frames_world[[0, -1]] - base.frames_world[[0, -1]]).max() <= 1e-9 * prepared.size
-        assert np.abs(other.frames_world[2] - base.frames_world[2]).max() > 1e-6 * prepared.size, changes
+    base = core.compute_morph(prepared, core.BakeSettings(frame_count=5, motion=motion))
+    other = core.compute_morph(prepared, core.BakeSettings(**{"frame_count": 5, "motion": motion, **changes}))
+    assert np.abs(other.frames_world[[0, -1]] - base.frames_world[[0, -1]]).max() <= 1e-9 * prepared.size
+    # (Frame 1: easing in-out keeps the middle frame where it is.)
+    assert np.abs(other.frames_world[1] - base.frames_world[1]).max() > 1e-6 * prepared.size, changes
+
+
+def test_an_engine_refusal_is_a_user_message():
     with pytest.raises(core.StickMorphError, match="stickmorph"):
-        core.compute_morph(prepared, core.BakeSettings(frame_count=5, weights="nonsense"))
+        core.compute_morph(prepare(), core.BakeSettings(frame_count=5, weights="nonsense"))
+
+
+def test_options_a_motion_does_not_use_are_not_given_to_the_engine(monkeypatch):
+    # The engine refuses rotation/turns/easing with another method than
+    # rigid, and steiner/weights/enclosure_sides/verify with linear.
+    engine = core.load_engine()
+    calls = []
+    morph = engine.morph
+    monkeypatch.setattr(engine, "morph", lambda *args, **kwargs: calls.append(kwargs) or morph(*args, **kwargs))
+    prepared = prepare()
+    settings = core.BakeSettings(frame_count=4, rotation="CW", turns=3, easing="EASE_IN_OUT", steiner="sg2001",
+                                 weights="uniform", enclosure_sides=7)
+    for motion in core.MOTIONS:
+        core.compute_morph(prepared, dataclasses.replace(settings, motion=motion))
+    rigid, barycentric, linear = calls
+    assert rigid == {"frames": 4, "method": "rigid", "steiner": "sg2001", "weights": "uniform",
+                     "enclosure_sides": 7, "verify": True, "rotation": "cw", "turns": 3, "easing": "in-out"}
+    assert barycentric == {"frames": 3 * core.EASE_OVERSAMPLING + 1, "method": "barycentric",
+                           "steiner": "sg2001", "weights": "uniform", "enclosure_sides": 7, "verify": True}
+    assert linear == {"frames": 3 * core.EASE_OVERSAMPLING + 1, "method": "linear"}
+
+
+def plane_xy(morph, prepared):
+    """The frames' in-plane coordinates (F, V, 2)."""
+    return np.array([core.project(frame, prepared.plane)[0] for frame in morph.frames_world])
+
+
+def test_the_default_motion_is_rigid_and_is_the_engines_rigid_morph():
+    prepared = prepare()
+    engine = core.load_engine()
+    for easing, engine_easing in (("LINEAR", None), ("EASE_IN_OUT", "in-out")):
+        morph = core.compute_morph(prepared, core.BakeSettings(frame_count=9, easing=easing))
+        assert morph.motion == "RIGID" and morph.stats["method"] == "rigid"
+        assert morph.stats["rigid"]["easing"] == (engine_easing or "none")
+        # Exactly frame_count engine frames, not picked from a finer morph.
+        expected = engine.morph(prepared.source_xy, prepared.target_xy, prepared.edges, frames=9,
+                                method="rigid", easing=engine_easing)
+        xy = plane_xy(morph, prepared)
+        assert np.abs(xy - expected["frames"]).max() <= 1e-9 * prepared.size
+        for frame in xy:  # valid: a stick figure compatible with the source
+            assert engine.check_compatibility(prepared.source_xy, frame, prepared.edges)
+        # The height moves with the eased time, in step with the figure.
+        heights = (morph.frames_world - prepared.plane.origin) @ prepared.plane.normal
+        t = core.ease(np.linspace(0, 1, 9), easing)
+        h0, h1 = prepared.source_h.mean(), prepared.target_h.mean()
+        assert np.allclose(heights.mean(axis=1), (1 - t) * h0 + t * h1, atol=1e-9 * prepared.size)
+        assert morph.invalid_frames == []
+
+
+def test_barycentric_reproduces_the_previous_bakes():
+    # Before the motion option the add-on always baked method="barycentric",
+    # easing by picking frames of an oversampled morph.
+    prepared = prepare()
+    engine = core.load_engine()
+    for easing in core.EASINGS:
+        morph = core.compute_morph(prepared, core.BakeSettings(frame_count=7, motion="BARYCENTRIC", easing=easing))
+        m = 7 if easing == "LINEAR" else 6 * core.EASE_OVERSAMPLING + 1
+        old = engine.morph(prepared.source_xy, prepared.target_xy, prepared.edges, frames=m,
+                           steiner="improved", weights="mvc", enclosure_sides=6, method="barycentric",
+                           verify=True)
+        index = np.rint(core.ease(np.arange(7) / 6, easing) * (m - 1)).astype(int)
+        assert np.abs(plane_xy(morph, prepared) - old["frames"][index]).max() <= 1e-9 * prepared.size
+        assert morph.stats["method"] == "barycentric" and "rigid" not in morph.stats
+        assert core.motion_summary(morph) == ("Barycentric", "barycentric")
+
+
+def turning_angles(frames):
+    """The figure's orientation in each frame relative to the first (2D
+    Procrustes angle about the centroid), unwrapped: the total turn so far."""
+    first = frames[0] - frames[0].mean(axis=0)
+    angles = []
+    for frame in frames:
+        d = frame - frame.mean(axis=0)
+        cross = np.sum(first[:, 0] * d[:, 1] - first[:, 1] * d[:, 0])
+        dot = np.sum(first * d)
+        angles.append(np.arctan2(cross, dot))
+    return np.degrees(np.unwrap(angles))
+
+
+def quarter_turn_pair():
+    """The tree and the tree turned by -90 degrees (clockwise) in its plane."""
+    turned = TREE_SOURCE @ np.array([[0.0, -1.0], [1.0, 0.0]])  # (x, y) -> (y, -x)
+    return prepare(target=in_space(turned, [1.0, -2.0, 0.5]))
+
+
+@pytest.mark.parametrize("rotation, turns, degrees", [
+    ("SHORT", 0, -90), ("CW", 0, -90), ("CCW", 0, 270), ("SHORT", 1, 270), ("CCW", 1, 630), ("CW", -1, -450),
+])
+def test_rotation_and_turns_choose_the_way_round(rotation, turns, degrees):
+    prepared = quarter_turn_pair()
+    morph = core.compute_morph(prepared, core.BakeSettings(frame_count=25, rotation=rotation, turns=turns))
+    rigid = morph.stats["rigid"]
+    assert (rigid["rotation"], rigid["turns"]) == (rotation.lower(), turns)
+    assert rigid["similarity"]["angle_degrees"] == pytest.approx(degrees)
+    # The figure really turns that far, in even steps (a pure rotation is rigid).
+    angles = turning_angles(plane_xy(morph, prepared))
+    assert angles[-1] == pytest.approx(degrees, abs=1e-6)
+    assert np.allclose(np.diff(angles), degrees / 24, atol=1e-6)
+    short, text = core.motion_summary(morph)
+    assert short == "Rigid guide: 23/23" and text == "rigid: 23/23 frames follow the rigid guide"
+
+
+
+def test_motion_summary_of_the_rigid_guide():
+    def summary(guide, frames=30):
+        morph = core.MorphResult(np.zeros((frames, 1, 3)), None, {"rigid": {"guide_frames": guide}}, "RIGID")
+        return core.motion_summary(morph)
+
+    assert summary({"exact": 20, "blended": 8, "barycentric": 0}) == (
+        "Rigid guide: 28/28", "rigid: 28/28 frames follow the rigid guide")
+    assert summary({"exact": 20, "blended": 5, "barycentric": 3}) == (
+        "Rigid guide: 25/28",
+        "rigid: 25/28 frames follow the rigid guide (3 fall back to barycentric where it is not valid)")
+    # Two frames are the figures themselves: nothing to follow.
+    assert summary({"exact": 0, "blended": 0, "barycentric": 0}, frames=2) == ("Rigid", "rigid")
+
+
+def half_turn_pair():
+    """The tree and the tree turned by 180 degrees: straight lines collapse
+    it onto one point half way."""
+    return prepare(target=in_space(-TREE_SOURCE, [1.5, -2.0, 0.5]))
+
+
+def test_linear_motion_lists_its_invalid_frames():
+    prepared = half_turn_pair()
+    engine = core.load_engine()
+    for frame_count, easing, invalid in ((5, "LINEAR", [2]), (7, "EASE_IN_OUT", [3]), (6, "LINEAR", [])):
+        morph = core.compute_morph(prepared, core.BakeSettings(frame_count=frame_count, motion="LINEAR",
+                                                               easing=easing, show_triangulation=True))
+        assert morph.motion == "LINEAR" and morph.triangulation is None
+        assert morph.stats["method"] == "linear"
+        assert morph.invalid_frames == invalid, (frame_count, easing)
+        xy = plane_xy(morph, prepared)
+        for k, frame in enumerate(xy):
+            valid = bool(engine.check_compatibility(prepared.source_xy, frame, prepared.edges)) \
+                if np.unique(np.round(frame, 12), axis=0).shape[0] == len(frame) else False
+            assert valid == (k not in invalid), k
+        # Straight lines: every vertex moves along its own segment, at the
+        # picked engine frame's time.
+        m = core.engine_frame_count(frame_count, easing, "LINEAR")
+        t = core.ease_sample_indices(frame_count, easing, "LINEAR") / (m - 1)
+        straight = (1 - t)[:, None, None] * prepared.source_xy + t[:, None, None] * prepared.target_xy
+        assert np.abs(xy - straight).max() <= 1e-9 * prepared.size
+    morph = core.compute_morph(prepared, core.BakeSettings(frame_count=5, motion="LINEAR"))
+    assert core.motion_summary(morph, frame_start=10) == (
+        "Linear: 1 invalid", "linear: 1 of 5 frames cross or fold the figure (frames 12)")
+    valid = core.compute_morph(prepared, core.BakeSettings(frame_count=6, motion="LINEAR"))
+    assert core.motion_summary(valid) == ("Linear: all valid", "linear: every frame is valid")
+
+
+def test_frame_list():
+    assert core.frame_list([3, 4, 5, 9]) == "3-5, 9"
+    assert core.frame_list([7]) == "7"
+    assert core.frame_list([1, 3, 5, 6, 7, 9], limit=2) == "1, 3 and 4 more"
 
 
 def test_triangulation_world_keeps_the_figure_vertices():
