@@ -22,16 +22,21 @@ using internal::kPi;
 // ---------------------------------------------------------------------------
 // The enclosure (Algorithm 3, step 3): one regular k-gon for both figures.
 
-std::vector<Vec2> enclosure_polygon(const StickFigure& source, const StickFigure& target, int sides) {
+std::vector<Vec2> enclosure_polygon(const StickFigure& source, const StickFigure& target, int sides,
+                                    const std::vector<Vec2>& enclosed_points) {
   double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   double hi[2] = {-lo[0], -lo[1]};
-  for (const StickFigure* f : {&source, &target})
-    for (const Vec2& p : f->vertices)
-      for (int c = 0; c < 2; ++c) lo[c] = std::min(lo[c], p[c]), hi[c] = std::max(hi[c], p[c]);
+  const std::vector<Vec2>* point_sets[] = {&source.vertices, &target.vertices, &enclosed_points};
+  for (const std::vector<Vec2>* points : point_sets)
+    for (const Vec2& p : *points)
+      if (std::isfinite(p[0]) && std::isfinite(p[1]))
+        for (int c = 0; c < 2; ++c) lo[c] = std::min(lo[c], p[c]), hi[c] = std::max(hi[c], p[c]);
   const Vec2 center{0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])};
   double reach = 0;
-  for (const StickFigure* f : {&source, &target})
-    for (const Vec2& p : f->vertices) reach = std::max(reach, std::hypot(p[0] - center[0], p[1] - center[1]));
+  for (const std::vector<Vec2>* points : point_sets)
+    for (const Vec2& p : *points)
+      if (std::isfinite(p[0]) && std::isfinite(p[1]))
+        reach = std::max(reach, std::hypot(p[0] - center[0], p[1] - center[1]));
   // A margin of half the figures' reach keeps the annulus roomy; a lone
   // point still gets a unit-sized enclosure, scaled to its coordinates.
   if (reach == 0) reach = std::max(1.0, 1e-6 * std::max(std::abs(center[0]), std::abs(center[1])));
@@ -69,7 +74,7 @@ FigureTriangulation triangulate_figures(const StickFigure& source, const StickFi
 
   const int n = int(source.vertices.size());
   const int k = options.enclosure_sides;
-  const std::vector<Vec2> enclosure = enclosure_polygon(source, target, k);
+  const std::vector<Vec2> enclosure = enclosure_polygon(source, target, k, options.enclosed_points);
   const internal::AnnulusCut cut =
       internal::choose_annulus_cut(source, source_dec, target, target_dec, enclosure);
   const int bends = int(cut.source_bends.size());

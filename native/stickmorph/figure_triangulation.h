@@ -35,6 +35,12 @@ struct FigureTriangulationOptions {
   SteinerMethod method = SteinerMethod::Improved;
   int enclosure_sides = 6;  ///< a regular hexagon, as in the paper (section 5)
   int smoothing_rounds = 10;
+  /// More points that the enclosure must contain besides both figures'
+  /// vertices: the rigid morph's guide sampled over time (issue 12), so
+  /// that a figure that reaches further on the way than at either end (a
+  /// curve straightening) does not have to fold its triangles out to the
+  /// enclosure. Empty for the paper's enclosure.
+  std::vector<Vec2> enclosed_points;
 };
 
 struct FigureTriangulationStats {

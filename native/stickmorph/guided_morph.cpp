@@ -300,10 +300,9 @@ struct GuidedMorph::State {
     return guide.parameter_at((j - 1 + f) / kTrustSamples, Easing::None);
   }
 
-  // Steps 3-4: the guide frame when every figure vertex trusts it fully
-  // (then it is the solution of the positive system below, hence valid; it
-  // is checked exactly all the same), otherwise guide weights where the
-  // guide's stars are valid. `exact` tells which.
+  // Steps 3-4: the guide frame when every figure vertex trusts it fully,
+  // otherwise guide weights where the guide's stars are valid. `exact`
+  // tells which.
   std::vector<Vec2> guided_frame(const std::vector<Vec2>& g, double u, bool& exact) {
     std::vector<double> trusts(tri.figure_vertices);
     exact = true;
@@ -311,8 +310,12 @@ struct GuidedMorph::State {
       trusts[v] = trust_at(g, u, v);
       if (trusts[v] < 1) exact = false;
     }
-    if (exact && first_non_positive(tri, g) < 0) return g;
-    exact = false;
+    // Every figure vertex's weights reproduce g (its star is valid there)
+    // and every Steiner vertex's do by construction (guide_frame), so g is
+    // the solution of a system with positive weights: a valid
+    // triangulation by Tutte's theorem, up to the rounding that the exact
+    // check of the output frame catches.
+    if (exact) return g;
     std::vector<std::vector<double>> mixed(tri.figure_vertices);
     for (int v = 0; v < tri.figure_vertices; ++v) {
       const double a = trusts[v];
@@ -384,6 +387,7 @@ GuidedMorph& GuidedMorph::operator=(GuidedMorph&&) noexcept = default;
 const FigureTriangulation& GuidedMorph::triangulation() const { return state_->output; }
 const SimilarityMotion& GuidedMorph::similarity() const { return state_->similarity; }
 const GuidedMorphStats& GuidedMorph::stats() const { return state_->stats; }
+
 
 GuidedFrame GuidedMorph::frame(double t, int frame, bool verify, const std::string& context) {
   if (!(t >= 0 && t <= 1)) throw InvalidArgumentError("the morph time must be in [0, 1]");

@@ -115,6 +115,7 @@ class GuidedMorph {
   const SimilarityMotion& similarity() const;
   const GuidedMorphStats& stats() const;
 
+
  private:
   struct State;
   std::unique_ptr<State> state_;

@@ -67,31 +67,59 @@ void morph_rigidly(const StickFigure& source, const StickFigure& target, const M
   std::optional<GuidedMorph> morph;
   MorphResult morphed;
   GuidedMorphStats guided;
+  const Easing easing = options.easing.value_or(Easing::None);
+  const WeightKind weights = result.morph_options.weights;
   try {
     auto start = std::chrono::steady_clock::now();
     const std::optional<StickFigure> normalised = normalised_target(source, target, similarity);
+    // The enclosure holds the guide's whole way as the triangulation sees
+    // it (mapped back by the similarity when that is factored out), not
+    // only its two ends (FigureTriangulationOptions::enclosed_points).
+    std::optional<RigidGuide> guide(std::in_place, source, target.vertices, similarity);
+    auto guide_points = [&](bool mapped_back) {
+      constexpr int kEnclosedSamples = 16;
+      std::vector<Vec2> points;
+      for (int j = 1; j < kEnclosedSamples; ++j) {
+        const double u = double(j) / kEnclosedSamples;
+        for (const Vec2& p : guide->at(u)) points.push_back(mapped_back ? similarity.unapply(u, p) : p);
+      }
+      return points;
+    };
+    FigureTriangulationOptions triangulation_options = result.triangulation_options;
+    triangulation_options.enclosed_points = guide_points(normalised.has_value());
+    // Only for the fallback below.
+    const std::vector<Vec2> unmapped_points = normalised ? guide_points(false) : std::vector<Vec2>{};
+    triangulation = triangulate_figures(source, normalised ? *normalised : target, triangulation_options,
+                                        &stats.triangulation);
+    stats.triangulate_ms = milliseconds_since(start);
+
+    start = std::chrono::steady_clock::now();
+    auto make = [&](const SimilarityMotion& factored) {
+      // The guide moves into the morph; a failed attempt needs a new one.
+      if (!guide) guide.emplace(source, target.vertices, similarity);
+      RigidGuide own = std::move(*guide);
+      guide.reset();
+      morph.emplace(triangulation, source, target.vertices, factored, std::move(own), weights, easing);
+    };
     if (normalised) {
-      triangulation = triangulate_figures(source, *normalised, result.triangulation_options, &stats.triangulation);
       try {
-        morph.emplace(triangulation, source, target.vertices, similarity,
-                      RigidGuide(source, target.vertices, similarity), result.morph_options.weights,
-                      options.easing.value_or(Easing::None));
+        make(similarity);
         stats.similarity_factored = true;
       } catch (const VerificationError&) {
         // The triangulation moved to the target by the similarity lost a
         // nearly flat triangle to rounding: triangulate the pair itself.
+        triangulation_options.enclosed_points = unmapped_points;
+        const auto again = std::chrono::steady_clock::now();
+        triangulation = triangulate_figures(source, target, triangulation_options, &stats.triangulation);
+        stats.triangulate_ms += milliseconds_since(again);
       }
     }
-    if (!morph) {
-      triangulation = triangulate_figures(source, target, result.triangulation_options, &stats.triangulation);
-      morph.emplace(triangulation, source, target.vertices, SimilarityMotion{},
-                    RigidGuide(source, target.vertices, similarity), result.morph_options.weights,
-                    options.easing.value_or(Easing::None));
-    }
-    stats.triangulate_ms = milliseconds_since(start);
+    if (!morph) make(SimilarityMotion{});
+    const double setup_ms = milliseconds_since(start);
     start = std::chrono::steady_clock::now();
     morphed = guided_morph(*morph, result.morph_options.frames, result.morph_options.verify, &guided);
-    stats.morph_ms = milliseconds_since(start);
+    stats.morph_ms = setup_ms + milliseconds_since(start);
+    stats.factorize_ms = setup_ms;
   } catch (const InvalidArgumentError& error) {
     throw InternalError(std::string("morph_stick_figures: the engine refused its own intermediate result: ") +
                         error.what());

@@ -26,7 +26,7 @@ double wrap_angle(double a) {
 // Samples of the cumulative motion table: fine enough that the inverse,
 // piecewise linear, is within a fraction of a percent of even for any frame
 // count an animation uses, and cheap (one triangular solve per sample).
-constexpr int kMotionSamples = 512;
+constexpr int kMotionSamples = 200;
 
 double ease(double t, Easing easing) {
   if (easing == Easing::InOut) return t * t * (3 - 2 * t);
