@@ -27,7 +27,7 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 // the time over which a vertex's trust may rise from 0 to 1: a fifth of the
 // morph, several frames at any frame rate an animation uses, so a hand-over
 // is spread over several frames instead of one.
-constexpr int kTrustSamples = 40;
+constexpr int kTrustSamples = 24;
 constexpr double kTrustRamp = 0.2;
 
 double smoothstep01(double x) {
@@ -183,9 +183,9 @@ struct GuidedMorph::State {
 
   // Steps 1-2: the guide frame in normalised space.
   std::vector<Vec2> guide_frame(double u) {
-    const std::vector<Vec2> figure = guide.at(u);
+    const std::vector<Vec2> figure = similarity.unapply(u, guide.at(u));
     std::vector<Vec2> g = tri.source;  // the enclosure is fixed
-    for (int v = 0; v < tri.figure_vertices; ++v) g[v] = similarity.unapply(u, figure[v]);
+    std::copy(figure.begin(), figure.end(), g.begin());
     // Warm values for the Steiner nodes are not needed: a direct solve.
     if (!steiner_system.solve([&](int v) -> const std::vector<double>& { return wt[v]; }, g))
       throw VerificationError("the rigid morph's Steiner system at u = " + format_double(u) + " is singular");

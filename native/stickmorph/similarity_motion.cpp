@@ -51,32 +51,63 @@ bool SimilarityMotion::is_identity() const {
   return angle == 0 && scale == 1 && source_center == target_center;
 }
 
+namespace {
+
+// x -> center + (c, -s; s, c) (x - origin): the similarity at one time,
+// its power and trigonometry evaluated once for all points.
+struct SimilarityAt {
+  double c, s;
+  Vec2 origin, center;
+  Vec2 operator()(const Vec2& x) const {
+    const double dx = x[0] - origin[0], dy = x[1] - origin[1];
+    return {center[0] + c * dx - s * dy, center[1] + s * dx + c * dy};
+  }
+};
+
+SimilarityAt forward_at(const SimilarityMotion& m, double t) {
+  const double a = t * m.angle;
+  const double k = std::pow(m.scale, t);  // geometric: the same ratio in every equal time step
+  return {k * std::cos(a), k * std::sin(a), m.source_center,
+          {(1 - t) * m.source_center[0] + t * m.target_center[0],
+           (1 - t) * m.source_center[1] + t * m.target_center[1]}};
+}
+
+SimilarityAt inverse_at(const SimilarityMotion& m, double t) {
+  const double a = -t * m.angle;
+  const double k = std::pow(m.scale, -t);
+  return {k * std::cos(a), k * std::sin(a),
+          {(1 - t) * m.source_center[0] + t * m.target_center[0],
+           (1 - t) * m.source_center[1] + t * m.target_center[1]},
+          m.source_center};
+}
+
+}  // namespace
+
 Vec2 SimilarityMotion::apply(double t, const Vec2& x) const {
   if (t == 0) return x;
-  const double a = t * angle;
-  const double s = std::pow(scale, t);  // geometric: the same ratio in every equal time step
-  const double c = s * std::cos(a), sn = s * std::sin(a);
-  const double dx = x[0] - source_center[0], dy = x[1] - source_center[1];
-  const double cx = (1 - t) * source_center[0] + t * target_center[0];
-  const double cy = (1 - t) * source_center[1] + t * target_center[1];
-  return {cx + c * dx - sn * dy, cy + sn * dx + c * dy};
+  return forward_at(*this, t)(x);
 }
 
 Vec2 SimilarityMotion::unapply(double t, const Vec2& y) const {
   if (t == 0) return y;
-  const double a = -t * angle;
-  const double s = std::pow(scale, -t);
-  const double c = s * std::cos(a), sn = s * std::sin(a);
-  const double cx = (1 - t) * source_center[0] + t * target_center[0];
-  const double cy = (1 - t) * source_center[1] + t * target_center[1];
-  const double dx = y[0] - cx, dy = y[1] - cy;
-  return {source_center[0] + c * dx - sn * dy, source_center[1] + sn * dx + c * dy};
+  return inverse_at(*this, t)(y);
 }
 
 std::vector<Vec2> SimilarityMotion::apply(double t, const std::vector<Vec2>& points) const {
+  if (t == 0) return points;
+  const SimilarityAt map = forward_at(*this, t);
   std::vector<Vec2> out;
   out.reserve(points.size());
-  for (const Vec2& p : points) out.push_back(apply(t, p));
+  for (const Vec2& p : points) out.push_back(map(p));
+  return out;
+}
+
+std::vector<Vec2> SimilarityMotion::unapply(double t, const std::vector<Vec2>& points) const {
+  if (t == 0) return points;
+  const SimilarityAt map = inverse_at(*this, t);
+  std::vector<Vec2> out;
+  out.reserve(points.size());
+  for (const Vec2& p : points) out.push_back(map(p));
   return out;
 }
 

@@ -58,8 +58,9 @@ struct SimilarityMotion {
   Vec2 apply(double t, const Vec2& x) const;
   /// The inverse of apply(t, .).
   Vec2 unapply(double t, const Vec2& y) const;
-  /// apply to every point.
+  /// apply and unapply to every point.
   std::vector<Vec2> apply(double t, const std::vector<Vec2>& points) const;
+  std::vector<Vec2> unapply(double t, const std::vector<Vec2>& points) const;
 };
 
 /// The similarity between two equally long vertex lists (#V by 2, vertex i
