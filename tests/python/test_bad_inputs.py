@@ -191,6 +191,7 @@ def test_cli_pair_kind(cli, folders, kind_id):
     out = out_dir / "OUT.json"
     for arguments in (["triangulate", source, target, "-o", str(out)],
                       ["morph", source, target, "-o", str(out), "--svg", str(out_dir / "OUT.svg")],
+                      ["morph", source, target, "-o", str(out), "--method", "barycentric"],
                       ["morph", source, target, "-o", str(out), "--method", "linear"]):
         message = assert_one_error_line(run_cli(cli, arguments), ["incompatible figures: "] + kind["cli"]["message"],
                                         arguments)
@@ -332,14 +333,16 @@ def test_python_figure_kind_from_arrays(kind_id):
 
 
 @pytest.mark.parametrize("kind_id", ids_with("python", lambda kind: "pair" in kind.get("input", {})))
-@pytest.mark.parametrize("function", ["morph", "triangulate_figures"])
-def test_python_pair_kind(kind_id, function):
+@pytest.mark.parametrize("function, options", [("morph", {}), ("morph", {"method": "barycentric"}),
+                                               ("morph", {"method": "linear"}), ("triangulate_figures", {})],
+                         ids=["morph", "morph-barycentric", "morph-linear", "triangulate_figures"])
+def test_python_pair_kind(kind_id, function, options):
     kind = KINDS[kind_id]
     source, target = (json.loads((DATA / "pairs" / f"{kind['input']['pair']}.{role}.json").read_text())
                       for role in ("source", "target"))
     call = getattr(stickmorph, function)
     with pytest.raises(stickmorph.StickMorphError) as info:
-        call(source["vertices"], target["vertices"], source["edges"], target_edges=target["edges"])
+        call(source["vertices"], target["vertices"], source["edges"], target_edges=target["edges"], **options)
     assert_python_error(info.value, kind["python"])
     # check_compatibility answers with a report, and the same reason.
     report = stickmorph.check_compatibility(source["vertices"], target["vertices"], source["edges"],

@@ -206,6 +206,12 @@ def test_double_dash_ends_options(cli, data_dir, tmp_path):
      "option '--svg-triangulation' takes no value"),
     (["triangulate", "a.json", "b.json", "-o", "x.json", "--framez=3"], "triangulate: unknown option '--framez'"),
     (["morph", "-o", "x.json", "a.json"], "morph: missing argument TARGET.json"),
+    (["morph", "a.json", "b.json", "-o", "x.json", "--turns"], "morph: option '--turns' needs a value K"),
+    (["morph", "a.json", "b.json", "-o", "x.json", "--rotation="], "morph: option '--rotation' needs a value DIR"),
+    (["morph", "a.json", "b.json", "-o", "x.json", "--easing", "in-out", "--easing=none"],
+     "morph: option '--easing' given twice"),
+    (["morph", "a.json", "b.json", "-o", "x.json", "--turns=1", "--turns", "2"], "morph: option '--turns' given twice"),
+    (["check", "a.json", "b.json", "--rotation", "ccw"], "check: unknown option '--rotation'"),
 ])
 def test_parser_errors_are_one_line_in_our_words(cli, arguments, fragment):
     result = run(cli, *arguments)

@@ -3,8 +3,15 @@
 ../shared/FORMAT.md fixes the morph document (edges, times, frames,
 triangulation, stats) and the error contract (exit 2, one `error:` line on
 stderr); docs/CLI.md documents `triangulate`, the options and the extensions
-(--svg, --method linear, stats.invalid_frames). A failure must leave no output
-file behind, not even the temporary OUT.json.partial.
+(--svg, --method rigid|barycentric|linear, stats.invalid_frames, stats.rigid).
+A failure must leave no output file behind, not even the temporary
+OUT.json.partial.
+
+The default method is rigid (issue 12): the similarity between the figures
+is factored out, so its triangulation is in output space, with the target's
+enclosure the source's moved by that similarity (the paper's section 6
+"rotated enclosure"). `stickmorph triangulate` writes the barycentric
+morph's triangulation, whose enclosure is the same in both figures.
 
 Every subprocess runs with a timeout, so a hang fails the test instead of
 stalling the suite.
@@ -36,7 +43,9 @@ PAIR_IDS = [name for _, name in PAIRS]
 # document may grow more ("extend freely"), so these are checked as subsets.
 MORPH_STATS_BARYCENTRIC = {"steiner_vertices", "triangles", "milliseconds", "method", "steiner_method",
                            "enclosure_sides", "weights", "verified", "refined_frames"}
+MORPH_STATS_RIGID = MORPH_STATS_BARYCENTRIC | {"factorizations", "rigid"}
 MORPH_STATS_LINEAR = {"steiner_vertices", "triangles", "milliseconds", "method", "invalid_frames"}
+RIGID_STATS = {"rotation", "turns", "easing", "similarity_factored", "similarity", "guide_frames"}
 TRIANGULATION_KEYS = {"figure_vertices", "enclosure_vertices", "steiner_vertices", "source", "target",
                       "triangles"}
 
@@ -99,8 +108,22 @@ def is_point_list(points, count):
             and all(isinstance(p, list) and len(p) == 2 and all(map(is_number, p)) for p in points))
 
 
-def check_triangulation_object(tri, source_vertices, target_vertices, edges):
-    """FORMAT.md's triangulation object, with its orientation promises checked exactly."""
+def similarity_image(similarity, points):
+    """`points` moved by the rigid morph's fitted similarity at t = 1:
+    target_center + scale * R(angle) (x - source_center)."""
+    angle = math.radians(similarity["angle_degrees"])
+    scale = similarity["scale"]
+    c, s = scale * math.cos(angle), scale * math.sin(angle)
+    (ax, ay), (bx, by) = similarity["source_center"], similarity["target_center"]
+    return [[bx + c * (x - ax) - s * (y - ay), by + s * (x - ax) + c * (y - ay)] for x, y in points]
+
+
+def check_triangulation_object(tri, source_vertices, target_vertices, edges, similarity=None):
+    """FORMAT.md's triangulation object, with its orientation promises checked
+    exactly. Without `similarity` (the barycentric morph, `triangulate`) the
+    enclosure is the same convex polygon in both figures; with it (the rigid
+    morph's stats["rigid"]["similarity"], when factored out) the target's
+    enclosure is the source's moved by that similarity, convex in both."""
     assert set(tri) == TRIANGULATION_KEYS
     n, k, s = tri["figure_vertices"], tri["enclosure_vertices"], tri["steiner_vertices"]
     assert all(type(v) is int for v in (n, k, s))
@@ -109,9 +132,16 @@ def check_triangulation_object(tri, source_vertices, target_vertices, edges):
     assert is_point_list(tri["source"], nodes) and is_point_list(tri["target"], nodes)
     assert tri["source"][:n] == source_vertices
     assert tri["target"][:n] == target_vertices
-    assert tri["source"][n:n + k] == tri["target"][n:n + k]
-    ring = [exact(p) for p in tri["source"][n:n + k]]
-    assert all(orient(ring[i], ring[(i + 1) % k], ring[(i + 2) % k]) > 0 for i in range(k))
+    if similarity is None:
+        assert tri["source"][n:n + k] == tri["target"][n:n + k]
+    else:
+        moved = np.array(similarity_image(similarity, tri["source"][n:n + k]))
+        ring = np.array(tri["target"][n:n + k])
+        size = float(np.ptp(ring, axis=0).max())
+        np.testing.assert_allclose(ring, moved, rtol=0, atol=1e-12 * size)
+    for embedding in (tri["source"], tri["target"]):
+        ring = [exact(p) for p in embedding[n:n + k]]
+        assert all(orient(ring[i], ring[(i + 1) % k], ring[(i + 2) % k]) > 0 for i in range(k))
     triangles = tri["triangles"]
     assert isinstance(triangles, list) and len(triangles) == 2 * nodes - k - 2
     for triangle in triangles:
@@ -127,7 +157,48 @@ def check_triangulation_object(tri, source_vertices, target_vertices, edges):
         assert frozenset((i, j)) in sides, (i, j)
 
 
-def check_morph_document(document, source_path, target_path, frames, method="barycentric"):
+def check_rigid_stats(stats, source_vertices, target_vertices, frames, rotation="short", turns=0,
+                      easing="none"):
+    """stats["rigid"] of a rigid morph (docs/CLI.md), the fitted similarity
+    recomputed here (Procrustes on the vertices)."""
+    rigid = stats["rigid"]
+    assert set(rigid) == RIGID_STATS
+    assert (rigid["rotation"], rigid["turns"], rigid["easing"]) == (rotation, turns, easing)
+    assert type(rigid["turns"]) is int and type(rigid["similarity_factored"]) is bool
+    similarity = rigid["similarity"]
+    assert set(similarity) == {"angle_degrees", "scale", "source_center", "target_center"}
+    assert type(similarity["angle_degrees"]) is float and math.isfinite(similarity["angle_degrees"])
+    assert type(similarity["scale"]) is float and similarity["scale"] > 0
+    source, target = np.array(source_vertices), np.array(target_vertices)
+    for center, points in ((similarity["source_center"], source), (similarity["target_center"], target)):
+        assert is_point_list([center], 1) and all(type(c) is float for c in center)
+        np.testing.assert_allclose(center, points.mean(axis=0), rtol=0, atol=1e-12 * (1 + np.abs(points).max()))
+    a, b = source - source.mean(axis=0), target - target.mean(axis=0)
+    radius_a, radius_b = np.sqrt((a ** 2).sum()), np.sqrt((b ** 2).sum())
+    if radius_a > 0 and radius_b > 0:
+        assert similarity["scale"] == pytest.approx(radius_b / radius_a, rel=1e-9)
+        fitted = math.degrees(math.atan2((a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]).sum(), (a * b).sum()))
+        # The rotation taken: the short way in (-180, 180], counter-clockwise
+        # in [0, 360) or clockwise in (-360, 0], plus the whole turns.
+        low = {"short": -180, "ccw": 0, "cw": -360}[rotation] + 360 * turns
+        angle = similarity["angle_degrees"]
+        assert low - 1e-9 <= angle <= low + 360 + 1e-9, (angle, rotation, turns)
+        assert math.remainder(angle - fitted, 360) == pytest.approx(0, abs=1e-7)
+    guide = rigid["guide_frames"]
+    assert set(guide) == {"exact", "blended", "barycentric"}
+    assert all(type(v) is int and v >= 0 for v in guide.values())
+    # Every interior frame is made one way or another.
+    assert sum(guide.values()) == frames - 2
+    # The rigid morph makes no LU factorization of [8]'s kind; the time it
+    # spends setting up its own systems, if it reports any, is part of the
+    # morph's.
+    milliseconds = stats["milliseconds"]
+    assert stats["factorizations"] == 0
+    assert 0 <= milliseconds["factorize"] <= milliseconds["morph"]
+    return rigid
+
+
+def check_morph_document(document, source_path, target_path, frames, method="rigid", **rigid_options):
     source_vertices, source_edges = read_figure(source_path)
     target_vertices, _ = read_figure(target_path)
     n = len(source_vertices)
@@ -159,10 +230,17 @@ def check_morph_document(document, source_path, target_path, frames, method="bar
         assert isinstance(invalid, list) and invalid == sorted(set(invalid))
         assert all(type(f) is int and 0 < f < frames - 1 for f in invalid)
     else:
-        assert MORPH_STATS_BARYCENTRIC <= set(stats)
+        assert (MORPH_STATS_RIGID if method == "rigid" else MORPH_STATS_BARYCENTRIC) <= set(stats)
         assert "invalid_frames" not in stats
         assert {"triangulate", "morph", "factorize", "solve", "verify"} <= set(milliseconds)
-        check_triangulation_object(tri, source_vertices, target_vertices, source_edges)
+        similarity = None
+        if method == "rigid":
+            rigid = check_rigid_stats(stats, source_vertices, target_vertices, frames, **rigid_options)
+            if rigid["similarity_factored"]:
+                similarity = rigid["similarity"]
+        else:
+            assert "rigid" not in stats and not rigid_options
+        check_triangulation_object(tri, source_vertices, target_vertices, source_edges, similarity)
         assert stats["steiner_vertices"] == tri["steiner_vertices"]
         assert stats["triangles"] == len(tri["triangles"])
         assert stats["enclosure_sides"] == tri["enclosure_vertices"]
@@ -205,45 +283,67 @@ def test_triangulate(cli, data_dir, tmp_path, folder, name):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["tri.json", "tri.svg"]
 
 
+@pytest.mark.parametrize("method", [None, "barycentric"], ids=["default-rigid", "barycentric"])
 @pytest.mark.parametrize("folder, name", PAIRS, ids=PAIR_IDS)
-def test_morph(cli, data_dir, tmp_path, folder, name):
+def test_morph(cli, data_dir, tmp_path, folder, name, method):
     source, target = pair_paths(data_dir, folder, name)
     out, svg = tmp_path / "morph.json", tmp_path / "morph.svg"
-    run_ok(cli, "morph", source, target, "-o", out, "--svg", svg)
+    options = [] if method is None else ["--method", method]
+    run_ok(cli, "morph", source, target, "-o", out, "--svg", svg, *options)
     document = json.loads(out.read_text())
-    check_morph_document(document, source, target, 50)
+    check_morph_document(document, source, target, 50, method=method or "rigid")
     check_svg(svg)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["morph.json", "morph.svg"]
-    # The morph used the triangulation `triangulate` writes.
     run_ok(cli, "triangulate", source, target, "-o", tmp_path / "tri.json")
-    assert json.loads((tmp_path / "tri.json").read_text()) == document["triangulation"]
+    written = json.loads((tmp_path / "tri.json").read_text())
+    if method == "barycentric":
+        # The barycentric morph used the triangulation `triangulate` writes.
+        assert written == document["triangulation"]
+    else:
+        # The rigid morph's is its own, in output space: its target
+        # enclosure moved with the figure unless the similarity is the
+        # identity (or was not factored out).
+        tri = document["triangulation"]
+        n, k = tri["figure_vertices"], tri["enclosure_vertices"]
+        rigid = document["stats"]["rigid"]
+        similarity = rigid["similarity"]
+        identity = (similarity["angle_degrees"] == 0 and similarity["scale"] == 1
+                    and similarity["source_center"] == similarity["target_center"])
+        moved = tri["target"][n:n + k] != tri["source"][n:n + k]
+        assert moved == (rigid["similarity_factored"] and not identity)
+        assert written["target"][n:n + written["enclosure_vertices"]] == \
+            written["source"][n:n + written["enclosure_vertices"]]
 
 
-@pytest.mark.parametrize("frames", [2, 7])
+@pytest.mark.parametrize("method", ["rigid", "barycentric"])
+@pytest.mark.parametrize("frames", [2, 3, 7])
 @pytest.mark.parametrize("name", ["tree_junction", "square_with_spikes"])
-def test_morph_frame_counts(cli, data_dir, tmp_path, frames, name):
+def test_morph_frame_counts(cli, data_dir, tmp_path, frames, name, method):
     source, target = pair_paths(data_dir, "pairs/compatible", name)
     out = tmp_path / "morph.json"
-    run_ok(cli, "morph", source, target, "-o", out, "--frames", frames)
-    check_morph_document(json.loads(out.read_text()), source, target, frames)
+    run_ok(cli, "morph", source, target, "-o", out, "--frames", frames, "--method", method)
+    check_morph_document(json.loads(out.read_text()), source, target, frames, method=method)
 
 
 @pytest.mark.parametrize("options", [["--steiner", "sg2001"], ["--steiner", "aronov"],
                                      ["--weights", "uniform"], ["--weights", "floater"],
                                      ["--enclosure-sides", "4"], ["--no-verify"],
-                                     ["--svg-triangulation", "--svg", "{tmp}/film.svg"]])
-def test_morph_options(cli, data_dir, tmp_path, options):
+                                     ["--svg-triangulation", "--svg", "{tmp}/film.svg"],
+                                     ["--svg-compare-linear", "--svg", "{tmp}/film.svg"]])
+@pytest.mark.parametrize("method", ["rigid", "barycentric"])
+def test_morph_options(cli, data_dir, tmp_path, options, method):
+    # The triangulation and check options apply to both methods.
     source, target = pair_paths(data_dir, "pairs/compatible", "polyline")
     out = tmp_path / "morph.json"
     options = [o.format(tmp=tmp_path) for o in options]
-    run_ok(cli, "morph", source, target, "-o", out, "--frames", 5, *options)
+    run_ok(cli, "morph", source, target, "-o", out, "--frames", 5, "--method", method, *options)
     document = json.loads(out.read_text())
     stats = document["stats"]
     if "--no-verify" in options:
         # The document says so, and the frames are otherwise as usual.
         assert stats["verified"] is False
         stats["verified"] = True
-    check_morph_document(document, source, target, 5)
+    check_morph_document(document, source, target, 5, method=method)
     if "--steiner" in options:
         assert stats["steiner_method"] == options[1]
     if "--weights" in options:
@@ -254,19 +354,31 @@ def test_morph_options(cli, data_dir, tmp_path, options):
         check_svg(tmp_path / "film.svg")
 
 
-def test_morph_agrees_with_the_module(cli, data_dir, tmp_path):
+@pytest.mark.parametrize("cli_options, keywords", [
+    ([], {}),
+    (["--method", "barycentric"], {"method": "barycentric"}),
+    (["--rotation", "ccw", "--turns", "-2", "--easing", "in-out"],
+     {"rotation": "ccw", "turns": -2, "easing": "in-out"}),
+], ids=["default-rigid", "barycentric", "rigid-options"])
+def test_morph_agrees_with_the_module(cli, data_dir, tmp_path, cli_options, keywords):
     source, target = pair_paths(data_dir, "paper", "s_to_u")
     out = tmp_path / "morph.json"
-    run_ok(cli, "morph", source, target, "-o", out, "--frames", 9, "--weights", "floater")
+    run_ok(cli, "morph", source, target, "-o", out, "--frames", 9, "--weights", "floater", *cli_options)
     document = json.loads(out.read_text())
     a, b = stickmorph.load_figure(source), stickmorph.load_figure(target)
-    result = stickmorph.morph(a["vertices"], b["vertices"], a["edges"], frames=9, weights="floater")
+    result = stickmorph.morph(a["vertices"], b["vertices"], a["edges"], frames=9, weights="floater", **keywords)
     # Full double precision: the text reads back as the very same doubles.
     assert np.array_equal(np.array(document["frames"]), result["frames"])
     assert np.array_equal(np.array(document["times"]), result["times"])
     tri = result["triangulation"]
     for key in ("source", "target", "triangles"):
         assert np.array_equal(np.array(document["triangulation"][key]), tri[key])
+    assert document["stats"]["method"] == result["stats"]["method"] == keywords.get("method", "rigid")
+    if "rigid" in result["stats"]:
+        rigid = dict(result["stats"]["rigid"])
+        rigid["similarity"] = {key: list(value) if isinstance(value, tuple) else value
+                               for key, value in rigid["similarity"].items()}
+        assert document["stats"]["rigid"] == rigid
 
 
 @pytest.mark.parametrize("folder, name", [("paper", "s_to_u"), ("pairs/compatible", "letter_a")])
@@ -287,6 +399,58 @@ def test_morph_linear(cli, data_dir, tmp_path, folder, name):
     times = np.array(document["times"])
     straight = (1 - times)[:, None, None] * frames[0][None] + times[:, None, None] * frames[-1][None]
     np.testing.assert_allclose(frames, straight, rtol=0, atol=1e-13)
+
+
+# The rigid method's own options (docs/CLI.md): they are reported back in
+# stats.rigid, and the morph stays a valid morph whichever way it turns.
+@pytest.mark.parametrize("options, expected", [
+    (["--rotation", "ccw"], {"rotation": "ccw"}),
+    (["--rotation", "cw"], {"rotation": "cw"}),
+    (["--turns", "1"], {"turns": 1}),
+    (["--turns", "-100"], {"turns": -100}),
+    (["--turns=100", "--rotation=cw"], {"turns": 100, "rotation": "cw"}),
+    (["--easing", "in-out"], {"easing": "in-out"}),
+    (["--method", "rigid", "--rotation", "short", "--turns", "0", "--easing", "none"], {}),
+])
+def test_morph_rigid_options(cli, data_dir, tmp_path, options, expected):
+    source, target = pair_paths(data_dir, "pairs/compatible", "letter_a")
+    out = tmp_path / "morph.json"
+    run_ok(cli, "morph", source, target, "-o", out, "--frames", 7, *options)
+    check_morph_document(json.loads(out.read_text()), source, target, 7, **expected)
+
+
+def half_turn_pair(tmp_path):
+    """A tree and its copy turned by exactly 180 degrees about its centroid
+    (0.875, 0.5), exact in doubles: x -> 2 c - x."""
+    vertices = [[0.0, 0.0], [3.0, 0.0], [0.0, 3.0], [-3.0, 0.0], [0.0, -3.0], [4.0, 1.0], [4.0, -1.0], [-1.0, 4.0]]
+    edges = [[0, 1], [0, 2], [0, 3], [0, 4], [1, 5], [1, 6], [2, 7]]
+    turned = [[1.75 - x, 1.0 - y] for x, y in vertices]
+    source, target = tmp_path / "tree.json", tmp_path / "tree_turned.json"
+    source.write_text(json.dumps({"vertices": vertices, "edges": edges}))
+    target.write_text(json.dumps({"vertices": turned, "edges": edges}))
+    return source, target
+
+
+def test_morph_half_turn_is_a_rotation(cli, tmp_path):
+    # Issue 12: a figure morphed into itself turned by 180 degrees simply
+    # turns, with no Steiner vertex, no stretching and even speed.
+    source, target = half_turn_pair(tmp_path)
+    out = tmp_path / "morph.json"
+    frames = 13
+    run_ok(cli, "morph", source, target, "-o", out, "--frames", frames)
+    document = json.loads(out.read_text())
+    check_morph_document(document, source, target, frames)
+    assert document["stats"]["steiner_vertices"] == 0
+    assert document["stats"]["rigid"]["similarity"]["scale"] == pytest.approx(1, abs=1e-12)
+    angle = document["stats"]["rigid"]["similarity"]["angle_degrees"]
+    assert abs(angle) == pytest.approx(180, abs=1e-9)
+    positions = np.array(document["frames"])
+    edges = np.array(document["edges"])
+    lengths = np.linalg.norm(positions[:, edges[:, 1]] - positions[:, edges[:, 0]], axis=2)
+    np.testing.assert_allclose(lengths, np.broadcast_to(lengths[0], lengths.shape), rtol=1e-9, atol=0)
+    direction = positions[:, 1] - positions[:, 0]
+    turned = np.degrees(np.unwrap(np.arctan2(direction[:, 1], direction[:, 0])))
+    np.testing.assert_allclose(turned - turned[0], angle * np.arange(frames) / (frames - 1), rtol=0, atol=1e-7)
 
 
 # --------------------------------------------------------------------------
@@ -332,7 +496,18 @@ def test_bad_frames(cli, data_dir, out_dir, frames, fragment):
     ("morph", "--steiner", "delaunay", "unknown Steiner method 'delaunay'"),
     ("triangulate", "--steiner", "delaunay", "unknown Steiner method 'delaunay'"),
     ("morph", "--weights", "cotan", "unknown weight kind 'cotan'"),
-    ("morph", "--method", "spline", "unknown morph method 'spline'"),
+    ("morph", "--method", "spline", "unknown morph method 'spline' (choose rigid, barycentric or linear)"),
+    ("morph", "--rotation", "left", "unknown rotation direction 'left' (choose short, ccw or cw)"),
+    ("morph", "--rotation", "CCW", "unknown rotation direction 'CCW' (choose short, ccw or cw)"),
+    ("morph", "--easing", "smooth", "unknown easing 'smooth' (choose none or in-out)"),
+    ("morph", "--turns", "101", "option --turns must be at most 100, got 101"),
+    ("morph", "--turns", "-101", "option --turns must be at least -100, got -101"),
+    ("morph", "--turns", "1.5", "option --turns needs a whole number, got '1.5'"),
+    ("morph", "--turns", "x", "option --turns needs a whole number, got 'x'"),
+    ("morph", "--turns", "99999999999999999999", "option --turns needs a whole number"),
+    ("triangulate", "--turns", "1", "unknown option '--turns'"),
+    ("triangulate", "--rotation", "ccw", "unknown option '--rotation'"),
+    ("triangulate", "--easing", "in-out", "unknown option '--easing'"),
     ("morph", "--enclosure-sides", "2", "--enclosure-sides must be at least 3"),
     ("triangulate", "--enclosure-sides", "x", "--enclosure-sides needs a whole number"),
     ("triangulate", "--weights", "mvc", "unknown option '--weights'"),
@@ -345,9 +520,31 @@ def test_bad_options(cli, data_dir, out_dir, command, option, value, fragment):
     assert fragment in message
 
 
+@pytest.mark.parametrize("method", ["barycentric", "linear"])
+@pytest.mark.parametrize("option, value", [("--rotation", "short"), ("--rotation", "ccw"), ("--turns", "0"),
+                                           ("--turns", "3"), ("--easing", "none"), ("--easing", "in-out")])
+def test_rigid_options_refused_with_other_methods(cli, data_dir, out_dir, method, option, value):
+    # Even its default value, once given, would mean nothing there.
+    source, target = letter_a(data_dir)
+    out = out_dir / "OUT.json"
+    message = assert_error(run(cli, "morph", source, target, "-o", out, "--method", method, option, value), out)
+    assert message == (f"option {option} has no effect with --method {method} "
+                       "(only the rigid method factors out a rotation and follows a guide)")
+
+
+def test_rigid_options_refused_before_the_figures_are_read(cli, data_dir, out_dir):
+    # As every argument check: a missing figure file is not even looked at.
+    source, _ = letter_a(data_dir)
+    out = out_dir / "OUT.json"
+    message = assert_error(run(cli, "morph", source, out_dir / "nope.json", "-o", out, "--method", "barycentric",
+                               "--turns", "1"), out)
+    assert message.startswith("option --turns has no effect with --method barycentric")
+
+
 @pytest.mark.parametrize("name", INCOMPATIBLE)
-@pytest.mark.parametrize("arguments", [["triangulate"], ["morph"], ["morph", "--method", "linear"]],
-                         ids=["triangulate", "morph", "morph-linear"])
+@pytest.mark.parametrize("arguments", [["triangulate"], ["morph"], ["morph", "--method", "barycentric"],
+                                       ["morph", "--method", "linear"]],
+                         ids=["triangulate", "morph", "morph-barycentric", "morph-linear"])
 def test_incompatible_pair(cli, data_dir, out_dir, name, arguments):
     source, target = pair_paths(data_dir, "pairs/incompatible", name)
     out = out_dir / "OUT.json"

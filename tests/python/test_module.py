@@ -761,6 +761,35 @@ def test_check_matches_cli(cli, tmp_path, target, expected_kind):
         assert (result.returncode, result.stdout) == (1, f"incompatible: {report.reason}\n")
 
 
+# The morph's options: the same check in the engine for both interfaces
+# (check_morph_options), the options named by keyword or by flag.
+@pytest.mark.parametrize("keywords", [
+    {"method": "barycentric", "turns": 1}, {"method": "barycentric", "rotation": "ccw"},
+    {"method": "barycentric", "easing": "in-out"}, {"method": "linear", "turns": 0},
+    {"method": "linear", "rotation": "short"}, {"method": "linear", "easing": "none"},
+    {"turns": 101}, {"turns": -101}, {"rotation": "left"}, {"easing": "smooth"}, {"method": "spline"},
+], ids=lambda keywords: "-".join(f"{k}={v}" for k, v in keywords.items()))
+def test_morph_option_messages_match_cli(cli, tmp_path, keywords):
+    source = write_figure(tmp_path / "source.json", WHEEL, WHEEL_EDGES)
+    target = write_figure(tmp_path / "target.json", affine(WHEEL, [[0, -1], [1, 0]], [1, 2]).tolist(), WHEEL_EDGES)
+    with pytest.raises(stickmorph.InvalidArgumentError) as info:
+        stickmorph.morph(WHEEL, affine(WHEEL, [[0, -1], [1, 0]], [1, 2]), WHEEL_EDGES, **keywords)
+    flags = []
+    for keyword, value in keywords.items():
+        flags += [stickmorph.OPTION_NAMES[keyword], str(value)]
+    out = tmp_path / "out.json"
+    result = run_cli(cli, "morph", source, target, "-o", out, *flags)
+    assert (result.returncode, result.stdout) == (2, "")
+    expected = str(info.value)
+    if "method" in keywords:
+        expected = expected.replace(f"method='{keywords['method']}'", f"--method {keywords['method']}")
+    for keyword in ("turns", "rotation", "easing"):
+        if expected.startswith(f"{keyword} "):
+            expected = f"option {stickmorph.OPTION_NAMES[keyword]}{expected[len(keyword):]}"
+    assert result.stderr == f"error: {expected}\n"
+    assert not out.exists()
+
+
 # --------------------------------------------------------------------------
 # Blender embeds Debian's Python: the same module must import there.
 

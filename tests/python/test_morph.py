@@ -7,9 +7,17 @@ adjacent edges overlap, no two vertices coincide, the counter-clockwise order
 of the neighbours around every vertex (sorted by exact angle comparison) is
 the source's, and the same face is the unbounded one. The triangulation is
 re-checked the same way: every triangle positive in both embeddings, the
-enclosure the same convex polygon in both, and the triangles tiling it.
+enclosure convex in both, and the triangles tiling it.
+
+The default method is rigid (issue 12): it factors out the best-fit
+similarity between the figures, so its triangulation is in output space and
+its target enclosure is the source's moved by that similarity (the paper's
+section 6 "rotated enclosure"); the barycentric method's enclosure is the
+same polygon in both figures, and triangulate_figures gives its
+triangulation.
 """
 import functools
+import math
 import re
 import threading
 from fractions import Fraction
@@ -252,8 +260,21 @@ def test_checker_sorts_by_exact_angle():
 # Triangulation checks
 
 
-def check_triangulation(tri, source, target, edges):
-    """Everything FORMAT.md promises about a triangulation dict, exactly."""
+def similarity_image(similarity, points):
+    """`points` moved by a rigid morph's fitted similarity at t = 1."""
+    angle = math.radians(similarity["angle_degrees"])
+    scale = similarity["scale"]
+    turn = scale * np.array([[math.cos(angle), -math.sin(angle)], [math.sin(angle), math.cos(angle)]])
+    return (np.asarray(points, float) - similarity["source_center"]) @ turn.T + similarity["target_center"]
+
+
+def check_triangulation(tri, source, target, edges, similarity=None):
+    """Everything FORMAT.md promises about a triangulation dict, exactly.
+
+    Without `similarity` (the barycentric morph, triangulate_figures) the
+    enclosure is the same polygon in both embeddings. With it (the rigid
+    morph's stats["rigid"]["similarity"], when factored out) the target's
+    enclosure is the source's moved by that similarity."""
     assert set(tri) == {"figure_vertices", "enclosure_vertices", "steiner_vertices", "source",
                         "target", "triangles", "stats"}
     n, k, s = tri["figure_vertices"], tri["enclosure_vertices"], tri["steiner_vertices"]
@@ -269,11 +290,18 @@ def check_triangulation(tri, source, target, edges):
     # Figure vertices first, exactly as given.
     assert np.array_equal(tri["source"][:n], source)
     assert np.array_equal(tri["target"][:n], target)
-    # The enclosure: identical in both, strictly convex and counter-clockwise.
-    assert np.array_equal(tri["source"][n:n + k], tri["target"][n:n + k])
-    ring = exact_points(tri["source"][n:n + k])
-    for i in range(k):
-        assert orient(ring[i], ring[(i + 1) % k], ring[(i + 2) % k]) > 0, i
+    # The enclosure: identical in both (or moved by the similarity),
+    # strictly convex and counter-clockwise in both.
+    if similarity is None:
+        assert np.array_equal(tri["source"][n:n + k], tri["target"][n:n + k])
+    else:
+        ring = tri["target"][n:n + k]
+        np.testing.assert_allclose(ring, similarity_image(similarity, tri["source"][n:n + k]), rtol=0,
+                                   atol=1e-12 * np.ptp(ring, axis=0).max())
+    for embedding in (tri["source"], tri["target"]):
+        ring = exact_points(embedding[n:n + k])
+        for i in range(k):
+            assert orient(ring[i], ring[(i + 1) % k], ring[(i + 2) % k]) > 0, i
 
     triangles = tri["triangles"]
     assert isinstance(triangles, np.ndarray)
@@ -287,6 +315,7 @@ def check_triangulation(tri, source, target, edges):
     darts = set()
     for embedding in (tri["source"], tri["target"]):
         exact = exact_points(embedding)
+        ring = exact[n:n + k]
         area = Fraction(0)
         for a, b, c in triangles:
             assert orient(exact[a], exact[b], exact[c]) > 0, (a, b, c)
@@ -343,22 +372,82 @@ def check_morph(result, source, target, edges, frames):
     return topology
 
 
+RIGID_STATS = {"rotation", "turns", "easing", "similarity_factored", "similarity", "guide_frames"}
+BARYCENTRIC_STATS = {"steiner_vertices", "triangles", "milliseconds", "method", "steiner_method",
+                     "enclosure_sides", "weights", "verified", "refined_frames", "factorizations"}
+
+
+def check_rigid_stats(stats, source, target, frames, rotation="short", turns=0, easing="none"):
+    """A rigid morph's stats: the barycentric ones plus stats["rigid"], whose
+    similarity is recomputed here (Procrustes on the vertices)."""
+    assert stats["method"] == "rigid"
+    assert set(stats) == BARYCENTRIC_STATS | {"rigid"}
+    rigid = stats["rigid"]
+    assert set(rigid) == RIGID_STATS
+    assert (rigid["rotation"], rigid["turns"], rigid["easing"]) == (rotation, turns, easing)
+    assert type(rigid["turns"]) is int and type(rigid["similarity_factored"]) is bool
+    similarity = rigid["similarity"]
+    assert set(similarity) == {"angle_degrees", "scale", "source_center", "target_center"}
+    assert type(similarity["angle_degrees"]) is float and math.isfinite(similarity["angle_degrees"])
+    assert type(similarity["scale"]) is float and similarity["scale"] > 0
+    source, target = np.asarray(source, float), np.asarray(target, float)
+    for center, points in ((similarity["source_center"], source), (similarity["target_center"], target)):
+        assert len(center) == 2 and all(type(c) is float for c in center)
+        np.testing.assert_allclose(center, points.mean(axis=0), rtol=0, atol=1e-12 * (1 + np.abs(points).max()))
+    a, b = source - source.mean(axis=0), target - target.mean(axis=0)
+    if np.abs(a).max() > 0 and np.abs(b).max() > 0:
+        assert similarity["scale"] == pytest.approx(np.sqrt((b ** 2).sum() / (a ** 2).sum()), rel=1e-9)
+        fitted = math.degrees(math.atan2((a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]).sum(), (a * b).sum()))
+        # The short way in (-180, 180], counter-clockwise in [0, 360),
+        # clockwise in (-360, 0]; then the whole turns.
+        low = {"short": -180, "ccw": 0, "cw": -360}[rotation] + 360 * turns
+        angle = similarity["angle_degrees"]
+        assert low - 1e-9 <= angle <= low + 360 + 1e-9, (angle, rotation, turns)
+        assert math.remainder(angle - fitted, 360) == pytest.approx(0, abs=1e-7)
+    guide = rigid["guide_frames"]
+    assert set(guide) == {"exact", "blended", "barycentric"}
+    assert all(type(v) is int and v >= 0 for v in guide.values())
+    assert sum(guide.values()) == frames - 2
+    # Its frames come from the guide, not from [8]'s refactorized systems;
+    # the time it spends setting up its own, if it reports any, is part of
+    # the morph's.
+    milliseconds = stats["milliseconds"]
+    assert stats["factorizations"] == 0
+    assert 0 <= milliseconds["factorize"] <= milliseconds["morph"]
+    return rigid
+
+
+def morph_similarity(result):
+    """The similarity a rigid morph's triangulation is moved by, or None."""
+    rigid = result["stats"].get("rigid")
+    return rigid["similarity"] if rigid and rigid["similarity_factored"] else None
+
+
+def engine_accepts_every_frame(result, source, edges):
+    """The module's own exact check: every frame compatible with the source."""
+    for k, frame in enumerate(result["frames"]):
+        report = stickmorph.check_compatibility(source, frame, edges)
+        assert report, f"frame {k}: {report.reason}"
+
+
 # --------------------------------------------------------------------------
-# The barycentric morph
+# The rigid (default) and barycentric morphs
 
 
+@pytest.mark.parametrize("method", [None, "barycentric"], ids=["default-rigid", "barycentric"])
 @pytest.mark.parametrize("name", PAIRS)
-def test_every_frame_is_a_compatible_stick_figure(name, data_dir):
+def test_every_frame_is_a_compatible_stick_figure(name, data_dir, method):
     source, target, edges = named_pair(name, data_dir)
-    result = stickmorph.morph(source, target, edges)
+    result = stickmorph.morph(source, target, edges, **({} if method is None else {"method": method}))
     check_morph(result, source, target, edges, 50)
+    engine_accepts_every_frame(result, source, edges)
     # The figure really moves between the endpoints, continuously.
     middle = result["frames"][25]
     assert not np.array_equal(middle, np.asarray(source, float))
     assert not np.array_equal(middle, np.asarray(target, float))
 
     tri = result["triangulation"]
-    check_triangulation(tri, source, target, edges)
+    check_triangulation(tri, source, target, edges, morph_similarity(result))
     stats = result["stats"]
     assert stats["steiner_vertices"] == tri["steiner_vertices"]
     assert stats["triangles"] == len(tri["triangles"])
@@ -366,9 +455,12 @@ def test_every_frame_is_a_compatible_stick_figure(name, data_dir):
     assert all(type(v) is float and v >= 0 for v in stats["milliseconds"].values())
     assert type(stats["refined_frames"]) is int and 0 <= stats["refined_frames"] <= 50
     assert type(stats["factorizations"]) is int and 0 <= stats["factorizations"] <= 50
-    assert set(stats) == {"steiner_vertices", "triangles", "milliseconds", "method", "steiner_method",
-                          "enclosure_sides", "weights", "verified", "refined_frames", "factorizations"}
-    assert stats["method"] == "barycentric" and stats["verified"] is True
+    if method is None:
+        check_rigid_stats(stats, source, target, 50)
+    else:
+        assert set(stats) == BARYCENTRIC_STATS
+        assert stats["method"] == "barycentric"
+    assert stats["verified"] is True
     assert stats["steiner_method"] == "improved" and stats["weights"] == "mvc"
     assert stats["enclosure_sides"] == 6 and tri["enclosure_vertices"] == 6
     assert "invalid_frames" not in stats
@@ -379,12 +471,19 @@ def test_triangulate_figures(name, data_dir):
     source, target, edges = named_pair(name, data_dir)
     tri = stickmorph.triangulate_figures(source, target, edges)
     check_triangulation(tri, source, target, edges)
-    # The morph uses the same triangulation for the same options.
-    used = stickmorph.morph(source, target, edges, frames=2)["triangulation"]
+    # The barycentric morph uses the same triangulation for the same options.
+    used = stickmorph.morph(source, target, edges, frames=2, method="barycentric")["triangulation"]
     for key in ("figure_vertices", "enclosure_vertices", "steiner_vertices", "stats"):
         assert used[key] == tri[key]
     for key in ("source", "target", "triangles"):
         assert np.array_equal(used[key], tri[key])
+    # The rigid morph's is its own: the pair with the similarity factored out,
+    # in output space, its target enclosure moved with the figure.
+    rigid = stickmorph.morph(source, target, edges, frames=2)
+    check_triangulation(rigid["triangulation"], source, target, edges, morph_similarity(rigid))
+    n, k = tri["figure_vertices"], tri["enclosure_vertices"]
+    assert morph_similarity(rigid) is not None
+    assert not np.array_equal(rigid["triangulation"]["target"][n:n + k], rigid["triangulation"]["source"][n:n + k])
 
 
 @pytest.mark.parametrize("weights", ["mvc", "uniform", "floater"])
@@ -396,32 +495,37 @@ def test_each_weight_kind(weights):
 
 
 def test_weight_kinds_give_different_paths():
-    middles = [stickmorph.morph(DANGLING_SOURCE, DANGLING_TARGET, DANGLING_EDGES, frames=3,
+    middles = [stickmorph.morph(DANGLING_SOURCE, DANGLING_TARGET, DANGLING_EDGES, frames=3, method="barycentric",
                                 weights=w)["frames"][1] for w in ("mvc", "uniform", "floater")]
     assert not np.array_equal(middles[0], middles[1])
     assert not np.array_equal(middles[0], middles[2])
 
 
+@pytest.mark.parametrize("method", ["rigid", "barycentric"])
 @pytest.mark.parametrize("steiner", ["improved", "sg2001", "aronov"])
-def test_each_steiner_method(steiner):
+def test_each_steiner_method(steiner, method):
     # The zigzag-to-spiral polyline needs Steiner vertices in the annulus.
     source = [[0, 0], [1, 2], [2, 0], [3, 2], [4, 0]]
     target = [[0, 0], [4, 0], [4, 4], [1, 4], [1, 1.5]]
     edges = [[0, 1], [1, 2], [2, 3], [3, 4]]
-    result = stickmorph.morph(source, target, edges, frames=9, steiner=steiner)
+    result = stickmorph.morph(source, target, edges, frames=9, steiner=steiner, method=method)
     check_morph(result, source, target, edges, 9)
-    check_triangulation(result["triangulation"], source, target, edges)
+    check_triangulation(result["triangulation"], source, target, edges, morph_similarity(result))
     assert result["stats"]["steiner_method"] == steiner
-    tri = stickmorph.triangulate_figures(source, target, edges, steiner=steiner)
-    check_triangulation(tri, source, target, edges)
-    assert tri["steiner_vertices"] == result["stats"]["steiner_vertices"]
+    if method == "barycentric":
+        tri = stickmorph.triangulate_figures(source, target, edges, steiner=steiner)
+        check_triangulation(tri, source, target, edges)
+        assert tri["steiner_vertices"] == result["stats"]["steiner_vertices"]
+    else:
+        assert result["triangulation"]["steiner_vertices"] == result["stats"]["steiner_vertices"]
 
 
+@pytest.mark.parametrize("method", ["rigid", "barycentric"])
 @pytest.mark.parametrize("sides", [3, 4, 11])
-def test_enclosure_sides(sides):
-    result = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=5, enclosure_sides=sides)
+def test_enclosure_sides(sides, method):
+    result = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=5, enclosure_sides=sides, method=method)
     check_morph(result, A_SOURCE, A_TARGET, A_EDGES, 5)
-    check_triangulation(result["triangulation"], A_SOURCE, A_TARGET, A_EDGES)
+    check_triangulation(result["triangulation"], A_SOURCE, A_TARGET, A_EDGES, morph_similarity(result))
     assert result["triangulation"]["enclosure_vertices"] == sides
     assert result["stats"]["enclosure_sides"] == sides
     tri = stickmorph.triangulate_figures(A_SOURCE, A_TARGET, A_EDGES, enclosure_sides=sides)
@@ -496,6 +600,343 @@ def test_morph_from_threads(data_dir):
 
 
 # --------------------------------------------------------------------------
+# The rigid morph: the similarity factored out, an as-rigid-as-possible
+# guide followed where it is valid, even speed (issue 12)
+
+
+def exact_centroid(points):
+    """The vertices' centroid, which these tests need to be a double exactly."""
+    points = exact_points(points)
+    center = tuple(sum(p[i] for p in points) / len(points) for i in (0, 1))
+    assert all(Fraction(float(c)) == c for c in center), center
+    return np.array([float(c) for c in center])
+
+
+def turned_half(points):
+    """The figure turned by exactly 180 degrees about its centroid c: x -> 2c - x,
+    exact in doubles for these figures."""
+    points = np.asarray(points, dtype=float)
+    center = exact_centroid(points)
+    turned = 2 * center - points
+    cx, cy = Fraction(center[0]), Fraction(center[1])
+    assert exact_points(turned) == [(2 * cx - x, 2 * cy - y) for x, y in exact_points(points)]
+    return turned
+
+
+def turned_quarter_clockwise(points):
+    """The figure turned by exactly -90 degrees and moved: (x, y) -> (y + 1, 2 - x)."""
+    points = np.asarray(points, dtype=float)
+    return np.stack([points[:, 1] + 1, 2 - points[:, 0]], axis=1)
+
+
+def edge_angles(frames, edges):
+    """Every edge's direction in every frame, degrees, unwrapped over the frames."""
+    edges = np.asarray(edges).reshape(-1, 2)
+    d = frames[:, edges[:, 1]] - frames[:, edges[:, 0]]
+    return np.degrees(np.unwrap(np.arctan2(d[..., 1], d[..., 0]), axis=0))
+
+
+def edge_lengths(frames, edges):
+    edges = np.asarray(edges).reshape(-1, 2)
+    return np.linalg.norm(frames[:, edges[:, 1]] - frames[:, edges[:, 0]], axis=2)
+
+
+def steps(frames):
+    """The RMS distance the vertices move from each frame to the next."""
+    return np.sqrt((np.diff(frames, axis=0) ** 2).sum(axis=2).mean(axis=1))
+
+
+def turning_figure(name, data_dir):
+    """Figures whose centroid is a double exactly: a tree, a hexagon, the paper's S."""
+    if name == "tree":
+        return TREE_SOURCE, TREE_EDGES
+    if name == "hexagon":
+        return HEXAGON_SOURCE, HEXAGON_EDGES
+    source, _, edges = paper_pair(data_dir)
+    return source, edges
+
+
+@pytest.mark.parametrize("frames", [3, 8, 30])
+@pytest.mark.parametrize("name", ["tree", "hexagon", "paper_s"])
+def test_half_turn_is_a_rotation(name, frames, data_dir):
+    # A figure morphed into itself turned by 180 degrees simply turns: no
+    # Steiner vertex, every edge keeps its length, the centroid stays put and
+    # the figure turns by 180 degrees * k / (N - 1) at frame k.
+    source, edges = turning_figure(name, data_dir)
+    target = turned_half(source)
+    result = stickmorph.morph(source, target, edges, frames=frames)
+    check_morph(result, source, target, edges, frames)
+    engine_accepts_every_frame(result, source, edges)
+    rigid = check_rigid_stats(result["stats"], source, target, frames)
+    assert result["stats"]["steiner_vertices"] == 0
+    assert rigid["similarity_factored"] is True
+    check_triangulation(result["triangulation"], source, target, edges, rigid["similarity"])
+    angle = rigid["similarity"]["angle_degrees"]
+    assert abs(angle) == pytest.approx(180, abs=1e-9)
+    assert rigid["similarity"]["scale"] == pytest.approx(1, abs=1e-12)
+
+    out = result["frames"]
+    lengths = edge_lengths(out, edges)
+    np.testing.assert_allclose(lengths, np.broadcast_to(lengths[0], lengths.shape), rtol=1e-9, atol=0)
+    size = np.ptp(np.asarray(source, float), axis=0).max()
+    np.testing.assert_allclose(out.mean(axis=1), np.broadcast_to(exact_centroid(source), (frames, 2)), rtol=0,
+                               atol=1e-9 * size)
+    turned = edge_angles(out, edges)
+    expected = angle * np.arange(frames) / (frames - 1)
+    np.testing.assert_allclose(turned - turned[0], np.broadcast_to(expected[:, None], turned.shape), rtol=0,
+                               atol=1e-7)
+
+
+@pytest.mark.parametrize("sides", [3, 24])
+def test_half_turn_does_not_depend_on_the_enclosure(sides):
+    # The barycentric morph turned less and squashed more with more sides.
+    target = turned_half(TREE_SOURCE)
+    result = stickmorph.morph(TREE_SOURCE, target, TREE_EDGES, frames=9, enclosure_sides=sides)
+    check_morph(result, TREE_SOURCE, target, TREE_EDGES, 9)
+    assert result["stats"]["steiner_vertices"] == 0 and result["triangulation"]["enclosure_vertices"] == sides
+    lengths = edge_lengths(result["frames"], TREE_EDGES)
+    np.testing.assert_allclose(lengths, np.broadcast_to(lengths[0], lengths.shape), rtol=1e-9, atol=0)
+    turned = edge_angles(result["frames"], TREE_EDGES)
+    assert np.abs(turned[-1] - turned[0]) == pytest.approx(180, abs=1e-7)
+
+
+@pytest.mark.parametrize("rotation, turns, expected", [
+    (None, None, -90), ("short", 0, -90), ("cw", None, -90), ("ccw", None, 270), ("ccw", 0, 270),
+    (None, 1, 270), (None, -1, -450), ("ccw", 1, 630), ("cw", -1, -450), ("cw", 2, 630), ("short", -2, -810),
+])
+@pytest.mark.parametrize("name", ["tree_junction", "letter_a"])
+def test_quarter_turn_direction_and_whole_turns(name, rotation, turns, expected, data_dir):
+    # The pair is a clockwise quarter turn: the short way and "cw" turn by
+    # -90 degrees, "ccw" the long way by +270, and each whole turn adds 360.
+    source, _, edges = named_pair(name, data_dir)
+    target = turned_quarter_clockwise(source)
+    frames = 41
+    options = {key: value for key, value in (("rotation", rotation), ("turns", turns)) if value is not None}
+    result = stickmorph.morph(source, target, edges, frames=frames, **options)
+    check_morph(result, source, target, edges, frames)
+    rigid = check_rigid_stats(result["stats"], source, target, frames, rotation=rotation or "short",
+                              turns=turns or 0)
+    assert result["stats"]["steiner_vertices"] == 0
+    assert rigid["similarity"]["angle_degrees"] == pytest.approx(expected, abs=1e-9)
+    # Tracked edge by edge, unwrapped: a rigid turn at constant angular speed.
+    turned = edge_angles(result["frames"], edges)
+    progress = expected * np.arange(frames) / (frames - 1)
+    np.testing.assert_allclose(turned - turned[0], np.broadcast_to(progress[:, None], turned.shape), rtol=0,
+                               atol=1e-7)
+    lengths = edge_lengths(result["frames"], edges)
+    np.testing.assert_allclose(lengths, np.broadcast_to(lengths[0], lengths.shape), rtol=1e-9, atol=0)
+
+
+@pytest.mark.parametrize("turns", [1, -1, 2])
+@pytest.mark.parametrize("name", ["letter_a", "s_to_u"])
+def test_whole_turns_add_360_degrees_to_any_pair(name, turns, data_dir):
+    # A pair that is not a similarity: every edge still ends up turned by
+    # 360 degrees per extra turn more than with the short way.
+    source, target, edges = named_pair(name, data_dir)
+    frames = 61
+    short = stickmorph.morph(source, target, edges, frames=frames)
+    more = stickmorph.morph(source, target, edges, frames=frames, turns=turns)
+    check_morph(more, source, target, edges, frames)
+    rigid = check_rigid_stats(more["stats"], source, target, frames, turns=turns)
+    assert rigid["similarity"]["angle_degrees"] == pytest.approx(
+        short["stats"]["rigid"]["similarity"]["angle_degrees"] + 360 * turns, abs=1e-9)
+    a, b = edge_angles(short["frames"], edges), edge_angles(more["frames"], edges)
+    np.testing.assert_allclose((b[-1] - b[0]) - (a[-1] - a[0]), 360 * turns, rtol=0, atol=1e-6)
+
+
+def test_the_largest_number_of_turns():
+    top = stickmorph.limits["max_turns"]
+    for turns in (top, -top):
+        result = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=7, turns=turns)
+        check_morph(result, A_SOURCE, A_TARGET, A_EDGES, 7)
+        check_rigid_stats(result["stats"], A_SOURCE, A_TARGET, 7, turns=turns)
+
+
+@pytest.mark.parametrize("name", PAIRS)
+def test_even_speed_by_default(name, data_dir):
+    # Time follows the motion: the vertices move about as far from each frame
+    # to the next, with no snap out of the start pose or into the end pose
+    # and no pop in between (the barycentric morph's first or last step is
+    # often several times its mean).
+    source, target, edges = named_pair(name, data_dir)
+    step = steps(stickmorph.morph(source, target, edges, frames=30)["frames"])
+    assert 0.75 * step.mean() <= step.min() and step.max() <= 1.25 * step.mean(), step / step.mean()
+
+
+@pytest.mark.parametrize("name", ["tree_junction", "letter_a", "s_to_u", "quarter_turn"])
+def test_easing_in_out_slows_the_start_and_the_end(name, data_dir):
+    if name == "quarter_turn":
+        source, edges = TREE_SOURCE, TREE_EDGES
+        target = turned_quarter_clockwise(source)
+    else:
+        source, target, edges = named_pair(name, data_dir)
+    frames = 21
+    even = stickmorph.morph(source, target, edges, frames=frames)
+    eased = stickmorph.morph(source, target, edges, frames=frames, easing="in-out")
+    check_morph(eased, source, target, edges, frames)
+    check_rigid_stats(eased["stats"], source, target, frames, easing="in-out")
+    # The times stay k / (N - 1); the motion is what slows down.
+    assert np.array_equal(eased["times"], even["times"])
+    step = steps(eased["frames"])
+    middle = step[len(step) // 3: 2 * len(step) // 3]
+    assert step[0] < 0.5 * middle.min() and step[-1] < 0.5 * middle.min(), step
+    assert step[0] < 0.5 * steps(even["frames"])[0] and step[-1] < 0.5 * steps(even["frames"])[-1]
+
+
+@pytest.mark.parametrize("options", [{"rotation": "ccw"}, {"rotation": "cw", "turns": 1},
+                                     {"turns": -1, "easing": "in-out"}, {"weights": "uniform", "steiner": "sg2001"},
+                                     {"enclosure_sides": 3, "easing": "in-out"}],
+                         ids=["ccw", "cw+1", "-1+in-out", "uniform-sg2001", "triangle-in-out"])
+@pytest.mark.parametrize("name", PAIRS + ["half_turn"])
+def test_every_rigid_frame_is_a_compatible_stick_figure(name, options, data_dir):
+    # Whichever way and however often it turns: the exact checks here and
+    # the module's own compatibility check accept every frame.
+    if name == "half_turn":
+        source, edges = HEXAGON_SOURCE, HEXAGON_EDGES
+        target = turned_half(source)
+    else:
+        source, target, edges = named_pair(name, data_dir)
+    frames = 16
+    result = stickmorph.morph(source, target, edges, frames=frames, **options)
+    check_morph(result, source, target, edges, frames)
+    engine_accepts_every_frame(result, source, edges)
+    rigid_options = {key: options[key] for key in ("rotation", "turns", "easing") if key in options}
+    check_rigid_stats(result["stats"], source, target, frames, **rigid_options)
+    check_triangulation(result["triangulation"], source, target, edges, morph_similarity(result))
+
+
+def test_rigid_triangulation_is_in_output_space():
+    # Source positions as given, target positions those of the target: its
+    # figure nodes exactly the target's vertices, its enclosure the source's
+    # moved by the fitted similarity; the triangulation of the pair with the
+    # similarity factored out, not triangulate_figures'.
+    result = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=2)
+    tri = result["triangulation"]
+    similarity = morph_similarity(result)
+    assert similarity is not None
+    check_triangulation(tri, A_SOURCE, A_TARGET, A_EDGES, similarity)
+    n, k = tri["figure_vertices"], tri["enclosure_vertices"]
+    fixed = stickmorph.triangulate_figures(A_SOURCE, A_TARGET, A_EDGES)
+    assert np.array_equal(fixed["source"][n:n + k], fixed["target"][n:n + k])
+    assert not np.array_equal(tri["source"][n:n + k], tri["target"][n:n + k])
+    # Moving every node of the target back by the similarity gives an
+    # embedding of the same triangles, counter-clockwise too.
+    back = {"angle_degrees": -similarity["angle_degrees"], "scale": 1 / similarity["scale"],
+            "source_center": similarity["target_center"], "target_center": similarity["source_center"]}
+    normalised = similarity_image(back, tri["target"])
+    np.testing.assert_allclose(normalised[n:n + k], tri["source"][n:n + k], rtol=0,
+                               atol=1e-12 * np.ptp(tri["source"], axis=0).max())
+    assert np.all(np.cross(normalised[tri["triangles"][:, 1]] - normalised[tri["triangles"][:, 0]],
+                           normalised[tri["triangles"][:, 2]] - normalised[tri["triangles"][:, 0]]) > 0)
+
+
+def test_pure_translation_and_scale_morph_rigidly():
+    # No rotation to factor out: the figure only grows and moves, every frame
+    # similar to the source, the edge lengths growing geometrically.
+    source = np.asarray(A_SOURCE, dtype=float)
+    target = 2 * source + [3, -1]
+    frames = 9
+    result = stickmorph.morph(source, target, A_EDGES, frames=frames)
+    check_morph(result, source, target, A_EDGES, frames)
+    rigid = check_rigid_stats(result["stats"], source, target, frames)
+    assert rigid["similarity"]["angle_degrees"] == pytest.approx(0, abs=1e-12)
+    assert rigid["similarity"]["scale"] == pytest.approx(2, rel=1e-12)
+    assert result["stats"]["steiner_vertices"] == 0
+    lengths = edge_lengths(result["frames"], A_EDGES)
+    ratio = lengths / lengths[0]
+    np.testing.assert_allclose(ratio, np.broadcast_to(ratio[:, :1], ratio.shape), rtol=1e-9, atol=0)
+    assert np.all(np.diff(ratio[:, 0]) > 0)
+    turned = edge_angles(result["frames"], A_EDGES)
+    np.testing.assert_allclose(turned, np.broadcast_to(turned[0], turned.shape), rtol=0, atol=1e-7)
+
+
+def test_rigid_morph_is_deterministic():
+    first = stickmorph.morph(DANGLING_SOURCE, DANGLING_TARGET, DANGLING_EDGES, frames=12, rotation="ccw")
+    again = stickmorph.morph(DANGLING_SOURCE, DANGLING_TARGET, DANGLING_EDGES, frames=12, rotation="ccw")
+    assert np.array_equal(first["frames"], again["frames"])
+    assert first["stats"]["rigid"] == again["stats"]["rigid"]
+
+
+# The rigid method's options, refused where they would mean nothing.
+
+RIGID_ONLY = [("rotation", "short"), ("rotation", "cw"), ("turns", 0), ("turns", 2), ("easing", "none"),
+              ("easing", "in-out")]
+
+
+@pytest.mark.parametrize("method", ["barycentric", "linear"])
+@pytest.mark.parametrize("keyword, value", RIGID_ONLY)
+def test_rigid_options_refused_with_other_methods(keyword, value, method):
+    # As `stickmorph morph --method barycentric --turns ...` does: even the
+    # default value, once given, would silently mean nothing.
+    with pytest.raises(stickmorph.InvalidArgumentError) as error:
+        stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, method=method, **{keyword: value})
+    assert isinstance(error.value, ValueError)
+    assert str(error.value) == (f"{keyword} has no effect with method='{method}' "
+                                "(only the rigid method factors out a rotation and follows a guide)")
+
+
+def test_rigid_options_are_refused_before_the_figures_are_checked():
+    with pytest.raises(stickmorph.InvalidArgumentError, match="turns has no effect"):
+        stickmorph.morph(CROSSING, CROSSING, CROSSING_EDGES, method="barycentric", turns=1)
+
+
+@pytest.mark.parametrize("keyword, value", RIGID_ONLY)
+@pytest.mark.parametrize("method", [None, "rigid"], ids=["default", "rigid"])
+def test_rigid_takes_its_options(keyword, value, method):
+    arguments = {keyword: value} if method is None else {keyword: value, "method": method}
+    result = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=4, **arguments)
+    assert result["stats"]["rigid"][keyword] == value
+
+
+@pytest.mark.parametrize("turns", [101, -101, 10**30, -10**30])
+def test_turns_out_of_range(turns):
+    with pytest.raises(stickmorph.InvalidArgumentError) as error:
+        stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, turns=turns)
+    bound = "at least -100" if turns < 0 else "at most 100"
+    assert str(error.value) == f"turns must be {bound}, got {turns}"
+    assert isinstance(error.value, ValueError)
+
+
+@pytest.mark.parametrize("turns, shown", [(1.0, "float"), ("1", "str"), (True, "bool"), ([1], "list")])
+def test_turns_not_an_integer(turns, shown):
+    with pytest.raises(stickmorph.InvalidArgumentError) as error:
+        stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, turns=turns)
+    assert str(error.value) == f"turns must be an integer, got {shown}"
+
+
+def test_turns_accepts_numpy_integers():
+    result = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=3, turns=np.int8(-3))
+    assert result["stats"]["rigid"]["turns"] == -3 and type(result["stats"]["rigid"]["turns"]) is int
+
+
+@pytest.mark.parametrize("keyword, value, message", [
+    ("rotation", "left", "unknown rotation direction 'left' (choose short, ccw or cw)"),
+    ("rotation", "CCW", "unknown rotation direction 'CCW' (choose short, ccw or cw)"),
+    ("rotation", "", "unknown rotation direction '' (choose short, ccw or cw)"),
+    ("easing", "smooth", "unknown easing 'smooth' (choose none or in-out)"),
+    ("easing", "in_out", "unknown easing 'in_out' (choose none or in-out)"),
+    ("rotation", 1, "rotation must be a str, got int"),
+    ("easing", ["none"], "easing must be a str, got list"),
+])
+def test_unknown_rotation_and_easing(keyword, value, message):
+    with pytest.raises(stickmorph.InvalidArgumentError) as error:
+        stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, **{keyword: value})
+    assert str(error.value) == message
+    assert isinstance(error.value, ValueError)
+
+
+def test_rigid_names_are_the_accepted_ones():
+    for rotation in stickmorph.ROTATION_NAMES:
+        assert stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=2, rotation=rotation)["stats"]["rigid"][
+            "rotation"] == rotation
+    for easing in stickmorph.EASING_NAMES:
+        assert stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=2, easing=easing)["stats"]["rigid"][
+            "easing"] == easing
+    for method in stickmorph.METHOD_NAMES:
+        assert stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=2, method=method)["stats"]["method"] == method
+
+
+# --------------------------------------------------------------------------
 # The linear baseline
 
 
@@ -529,8 +970,10 @@ def test_linear_s_to_u_self_intersects(data_dir):
     assert set(stats["milliseconds"]) == {"triangulate", "morph", "factorize", "solve", "verify"}
     assert stats["milliseconds"]["triangulate"] == 0.0 and stats["milliseconds"]["factorize"] == 0.0
 
-    # The barycentric morph of the same pair has no invalid frame.
-    check_morph(stickmorph.morph(source, target, edges, frames=frames), source, target, edges, frames)
+    # The barycentric and rigid morphs of the same pair have no invalid frame.
+    for method in ("barycentric", "rigid"):
+        check_morph(stickmorph.morph(source, target, edges, frames=frames, method=method), source, target, edges,
+                    frames)
 
 
 def test_linear_valid_morph_reports_nothing():
@@ -552,14 +995,17 @@ def test_linear_accepts_the_largest_frame_count():
 
 def test_defaults_are_documented():
     doc = stickmorph.morph.__doc__
-    # The barycentric-only options default to None (not given), so that
-    # method="linear" can refuse them; their effective defaults are in the text.
+    # The triangulation options and the rigid-only ones default to None (not
+    # given), so that the methods that would ignore them can refuse them;
+    # their effective defaults are in the text.
     for default in (r"frames: \w+ = 50", r"steiner: \w+ = None", r"weights: \w+ = None",
-                    r"enclosure_sides: \w+ = None", r"method: \w+ = 'barycentric'",
-                    r"verify: \w+ = None", r"target_edges: \w+ = None"):
+                    r"enclosure_sides: \w+ = None", r"method: \w+ = 'rigid'",
+                    r"verify: \w+ = None", r"target_edges: \w+ = None", r"rotation: \w+ = None",
+                    r"turns: \w+ = None", r"easing: \w+ = None"):
         assert re.search(default, doc), default
     for text in ('"improved" (default)', '"mvc" (mean value coordinates, default)', "(default 6)",
-                 "(default True)"):
+                 "(default True)", '"rigid" (default)', '"short" (default)', "(default 0)",
+                 '"none" (default, even speed)'):
         assert text in doc, text
     assert "(N, #V, 2)" in doc and "(N,) float64" in doc
     doc = stickmorph.triangulate_figures.__doc__
@@ -570,11 +1016,11 @@ def test_defaults_are_documented():
 
 
 @pytest.mark.parametrize("keyword, value, message", [
-    ("method", "spline", "unknown morph method 'spline' (choose barycentric or linear)"),
+    ("method", "spline", "unknown morph method 'spline' (choose rigid, barycentric or linear)"),
     ("weights", "cotan", "unknown weight kind 'cotan' (choose mvc, uniform or floater)"),
     ("steiner", "delaunay", "unknown Steiner method 'delaunay' (choose aronov, sg2001 or improved)"),
 ])
-@pytest.mark.parametrize("method", ["barycentric", "linear"])
+@pytest.mark.parametrize("method", ["rigid", "barycentric", "linear"])
 def test_unknown_names(keyword, value, message, method):
     arguments = {"method": method, keyword: value}
     with pytest.raises(stickmorph.InvalidArgumentError) as error:
@@ -588,7 +1034,7 @@ def test_unknown_steiner_name_in_triangulate_figures():
 
 
 @pytest.mark.parametrize("frames", [1, 0, -3, 100001, 10**30, -10**30])
-@pytest.mark.parametrize("method", ["barycentric", "linear"])
+@pytest.mark.parametrize("method", ["rigid", "barycentric", "linear"])
 def test_frames_out_of_range(frames, method):
     with pytest.raises(stickmorph.InvalidArgumentError) as error:
         stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=frames, method=method)
@@ -632,23 +1078,35 @@ def test_linear_refuses_what_it_would_ignore(keyword, value):
                                 "(the straight-line morph uses no triangulation)")
 
 
+@pytest.mark.parametrize("method", [None, "rigid", "barycentric"], ids=["default", "rigid", "barycentric"])
 @pytest.mark.parametrize("keyword, value", [("steiner", "sg2001"), ("weights", "uniform"),
                                             ("enclosure_sides", 7), ("verify", False)])
-def test_barycentric_takes_what_linear_refuses(keyword, value):
-    result = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=3, **{keyword: value})
+def test_barycentric_takes_what_linear_refuses(keyword, value, method):
+    arguments = {keyword: value} if method is None else {keyword: value, "method": method}
+    result = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=3, **arguments)
     assert result["frames"].shape == (3, len(A_SOURCE), 2)
+    assert result["stats"]["method"] == (method or "rigid")
+    stat = {"steiner": "steiner_method", "verify": "verified"}.get(keyword, keyword)
+    assert result["stats"][stat] == value
 
 
 def test_none_means_not_given():
     given = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=4, steiner="improved", weights="mvc",
-                             enclosure_sides=6, verify=True)
+                             enclosure_sides=6, verify=True, method="rigid", rotation="short", turns=0,
+                             easing="none")
     defaults = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=4, steiner=None, weights=None,
-                                enclosure_sides=None, verify=None)
+                                enclosure_sides=None, verify=None, rotation=None, turns=None, easing=None)
     assert np.array_equal(given["frames"], defaults["frames"])
     assert {k: defaults["stats"][k] for k in ("steiner_method", "enclosure_sides", "weights", "verified")} == \
         {"steiner_method": "improved", "enclosure_sides": 6, "weights": "mvc", "verified": True}
+    assert {k: defaults["stats"]["rigid"][k] for k in ("rotation", "turns", "easing")} == \
+        {"rotation": "short", "turns": 0, "easing": "none"}
+    barycentric = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=4, method="barycentric", rotation=None,
+                                   turns=None, easing=None)
+    assert barycentric["stats"]["method"] == "barycentric" and "rigid" not in barycentric["stats"]
     linear = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=4, method="linear", steiner=None,
-                              weights=None, enclosure_sides=None, verify=None)
+                              weights=None, enclosure_sides=None, verify=None, rotation=None, turns=None,
+                              easing=None)
     assert linear["triangulation"] is None
 
 
@@ -661,7 +1119,14 @@ def test_limits_and_option_names_are_exported():
     assert stickmorph.OPTION_NAMES["enclosure_sides"] == "--enclosure-sides"
     assert stickmorph.OPTION_NAMES["verify"] == "--no-verify"
     assert stickmorph.OPTION_NAMES["smoothing_rounds"] == ""
-    assert stickmorph.METHOD_NAMES == ("barycentric", "linear")
+    assert stickmorph.METHOD_NAMES == ("rigid", "barycentric", "linear")
+    assert stickmorph.ROTATION_NAMES == ("short", "ccw", "cw")
+    assert stickmorph.EASING_NAMES == ("none", "in-out")
+    assert stickmorph.limits["max_turns"] == 100
+    assert {k: stickmorph.OPTION_NAMES[k] for k in ("rotation", "turns", "easing")} == \
+        {"rotation": "--rotation", "turns": "--turns", "easing": "--easing"}
+    top_turns = stickmorph.limits["max_turns"]
+    assert re.search(rf"-{top_turns} to\s+{top_turns} \(default 0\)", stickmorph.morph.__doc__)
     # The docstrings quote them from the same table.
     limits = stickmorph.limits
     assert f"{limits['min_frames']} to {limits['max_frames']}" in stickmorph.morph.__doc__
@@ -698,7 +1163,7 @@ def test_incompatible_figures(name, data_dir):
     target = stickmorph.load_figure(folder / f"{name}.target.json")
     arguments = (source["vertices"], target["vertices"], source["edges"])
     report = stickmorph.check_compatibility(*arguments, target_edges=target["edges"])
-    for method in ("barycentric", "linear"):
+    for method in ("rigid", "barycentric", "linear"):
         with pytest.raises(stickmorph.IncompatibleFiguresError) as error:
             stickmorph.morph(*arguments, target_edges=target["edges"], method=method)
         # The report travels with the exception: no message parsing needed.

@@ -1,12 +1,15 @@
 """Tests of stickmorph.MorphSolver, the stateful morph solver for scrubbing.
 
-The reference is stickmorph.morph(): a MorphSolver made from the
-triangulation morph() used must give its frames, bit for bit when the times
-are solved in morph()'s order (the same engine solver, the same per-frame
-check and repair), and to the engine's iteration tolerance (about ten
-digits) in any other order.
+The reference is stickmorph.morph(method="barycentric"), the paper's morph:
+a MorphSolver made from the triangulation that morph used must give its
+frames, bit for bit when the times are solved in morph()'s order (the same
+engine solver, the same per-frame check and repair), and to the engine's
+iteration tolerance (about ten digits) in any other order. The rigid morph
+(the default) moves its enclosure with the figure, which a MorphSolver, a
+morph inside one fixed enclosure, refuses.
 """
 import random
+import re
 import threading
 
 import numpy as np
@@ -44,7 +47,7 @@ def extent(points):
 def case(request):
     figure, weights = request.param
     source, target, edges = FIGURES[figure]
-    result = stickmorph.morph(source, target, edges, frames=FRAMES, weights=weights)
+    result = stickmorph.morph(source, target, edges, frames=FRAMES, weights=weights, method="barycentric")
     return source, target, edges, weights, result
 
 
@@ -190,7 +193,7 @@ def test_bad_triangulations():
 
 
 def test_threads_share_one_solver():
-    result = stickmorph.morph(TREE_SOURCE, TREE_TARGET, TREE_EDGES, frames=FRAMES)
+    result = stickmorph.morph(TREE_SOURCE, TREE_TARGET, TREE_EDGES, frames=FRAMES, method="barycentric")
     solver = stickmorph.MorphSolver(result["triangulation"], TREE_EDGES)
     atol = ORDER_TOLERANCE * extent(TREE_SOURCE)
     failures = []
@@ -209,6 +212,28 @@ def test_threads_share_one_solver():
     for thread in threads:
         thread.join()
     assert failures == []
+
+
+@pytest.mark.parametrize("figure", FIGURES)
+def test_the_rigid_morphs_moving_enclosure_is_refused(figure):
+    # The default morph's triangulation is in output space: its target
+    # enclosure is the source's turned, scaled and moved, so it is no
+    # triangulation of one fixed enclosure.
+    source, target, edges = FIGURES[figure]
+    result = stickmorph.morph(source, target, edges, frames=3)
+    assert result["stats"]["method"] == "rigid" and result["stats"]["rigid"]["similarity_factored"]
+    n = result["triangulation"]["figure_vertices"]
+    with pytest.raises(stickmorph.InvalidArgumentError) as error:
+        stickmorph.MorphSolver(result["triangulation"], edges)
+    assert re.fullmatch(r"invalid triangulation for the morph: node (\d+) \(enclosure vertex (\d+)\) moves: "
+                        r"the enclosure must be the same in source and target", str(error.value)), str(error.value)
+    node, corner = map(int, re.fullmatch(r".*node (\d+) \(enclosure vertex (\d+)\).*", str(error.value)).groups())
+    assert node == n + corner
+    assert isinstance(error.value, ValueError)
+    # triangulate_figures' triangulation of the same pair, whose enclosure
+    # is fixed, is accepted.
+    tri = stickmorph.triangulate_figures(source, target, edges)
+    stickmorph.MorphSolver(tri, edges).solve(0.5)
 
 
 def test_docstrings():
