@@ -163,3 +163,45 @@ inline std::optional<std::pair<StickFigure, StickFigure>> random_compatible_pair
 }
 
 }  // namespace stickmorph::test
+
+namespace stickmorph::test {
+
+/// A stick man posed by forward kinematics: 11 vertices, a tree of 10 edges.
+/// Vertex 0 is the pelvis at `root`; edge i joins kStickManParent[i] to
+/// vertex i + 1 (1 chest, 2 head, 3-4 left arm, 5-6 right arm, 7-8 left leg,
+/// 9-10 right leg) with length lengths[i], turned by bends[i] radians from
+/// the direction of edge kStickManReference[i] (the spine's from `heading`).
+inline constexpr std::array<int, 10> kStickManParent = {0, 1, 1, 3, 1, 5, 0, 7, 0, 9};
+inline constexpr std::array<int, 10> kStickManReference = {-1, 0, 0, 2, 0, 4, 0, 6, 0, 8};
+
+inline StickFigure stick_man(const Vec2& root, double heading, const std::array<double, 10>& lengths,
+                             const std::array<double, 10>& bends) {
+  std::vector<Vec2> pts(11);
+  pts[0] = root;
+  std::array<double, 10> direction{};
+  RawEdges edges;
+  for (int i = 0; i < 10; ++i) {
+    direction[i] = (kStickManReference[i] < 0 ? heading : direction[kStickManReference[i]]) + bends[i];
+    const Vec2& from = pts[kStickManParent[i]];
+    pts[i + 1] = {from[0] + lengths[i] * std::cos(direction[i]), from[1] + lengths[i] * std::sin(direction[i])};
+    edges.push_back({kStickManParent[i], i + 1});
+  }
+  return figure(std::move(pts), edges);
+}
+
+/// The stick man standing: spine up, arms hanging out, legs apart.
+inline StickFigure stick_man_standing() {
+  constexpr double d = 3.14159265358979323846 / 180;
+  return stick_man({0, 0}, 90 * d, {3, 0.8, 1.2, 1.2, 1.2, 1.2, 1.5, 1.5, 1.5, 1.5},
+                   {0, 0, 120 * d, -30 * d, -120 * d, 30 * d, 160 * d, 10 * d, -160 * d, -10 * d});
+}
+
+/// The same stick man walking, leaning, waving, with longer limbs, turned
+/// by about 30 degrees and moved: every joint angle and length changed.
+inline StickFigure stick_man_walking() {
+  constexpr double d = 3.14159265358979323846 / 180;
+  return stick_man({2, -1}, 120 * d, {3.3, 0.9, 1.0, 1.4, 1.3, 1.1, 1.8, 1.6, 1.4, 1.7},
+                   {0, -15 * d, 80 * d, -60 * d, -140 * d, 55 * d, 140 * d, 35 * d, -150 * d, -35 * d});
+}
+
+}  // namespace stickmorph::test

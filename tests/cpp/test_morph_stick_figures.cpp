@@ -1,7 +1,10 @@
 // morph_stick_figures: Algorithm 3 end to end through the engine's one entry,
-// and the option checks (argument_limits.h) every interface relies on.
+// and the option checks (argument_limits.h) every interface relies on. The
+// rigid method (the default) has its own tests in test_guided_morph.cpp;
+// here the methods side by side.
 #include "catch.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <limits>
 #include <set>
@@ -44,6 +47,7 @@ std::string refusal(const MorphStickFiguresOptions& options) {
 TEST_CASE("morph_stick_figures runs steps 1-5 as triangulate_figures and morph_triangulation do") {
   const Pair pair = read_pair("compatible", "letter_a");
   MorphStickFiguresOptions options;
+  options.method = MorphMethod::Barycentric;
   options.frames = 7;
   options.keep_node_frames = true;
   const MorphStickFiguresResult result = morph_stick_figures(pair.source, pair.target, options);
@@ -72,6 +76,11 @@ TEST_CASE("morph_stick_figures runs steps 1-5 as triangulate_figures and morph_t
   CHECK(result.stats.steiner_vertices == triangulation.steiner_vertices);
   CHECK(result.stats.triangles == int(triangulation.triangles.size()));
   CHECK(result.stats.invalid_frames.empty());
+  // Nothing of the rigid method's.
+  CHECK_FALSE(result.stats.similarity_factored);
+  CHECK(result.stats.similarity.is_identity());
+  CHECK(result.stats.guide_exact_frames + result.stats.guide_blended_frames + result.stats.guide_barycentric_frames ==
+        0);
   CHECK(result.stats.triangulate_ms > 0);
   CHECK(result.stats.morph_ms >= result.stats.solve_ms);
   CHECK(result.stats.triangulation.interior_faces > 0);
@@ -83,26 +92,79 @@ TEST_CASE("morph_stick_figures runs steps 1-5 as triangulate_figures and morph_t
 
 TEST_CASE("morph_stick_figures keeps node frames only when asked") {
   const Pair pair = read_pair("compatible", "polyline");
+  for (const MorphMethod method : {MorphMethod::Rigid, MorphMethod::Barycentric}) {
+    CAPTURE(morph_method_name(method));
+    MorphStickFiguresOptions options;
+    options.method = method;
+    options.frames = 3;
+    CHECK(morph_stick_figures(pair.source, pair.target, options).node_frames.empty());
+    options.keep_node_frames = true;
+    const MorphStickFiguresResult result = morph_stick_figures(pair.source, pair.target, options);
+    REQUIRE(result.node_frames.size() == 3);
+    REQUIRE(result.triangulation.has_value());
+    for (std::size_t f = 0; f < 3; ++f) {
+      CHECK(int(result.node_frames[f].size()) == result.triangulation->node_count());
+      CHECK(std::equal(result.frames[f].begin(), result.frames[f].end(), result.node_frames[f].begin()));
+    }
+  }
+}
+
+TEST_CASE("morph_stick_figures's default method is rigid") {
+  CHECK(MorphStickFiguresOptions{}.method == MorphMethod::Rigid);
+  const Pair pair = read_pair("compatible", "letter_a");
   MorphStickFiguresOptions options;
-  options.frames = 3;
-  CHECK(morph_stick_figures(pair.source, pair.target, options).node_frames.empty());
+  options.frames = 5;
+  const MorphStickFiguresResult by_default = morph_stick_figures(pair.source, pair.target, options);
+  options.method = MorphMethod::Rigid;
+  const MorphStickFiguresResult rigid = morph_stick_figures(pair.source, pair.target, options);
+  CHECK(by_default.frames == rigid.frames);
+  CHECK(by_default.stats.similarity_factored);
+  CHECK(by_default.stats.guide_exact_frames + by_default.stats.guide_blended_frames +
+            by_default.stats.guide_barycentric_frames ==
+        3);
+  options.method = MorphMethod::Barycentric;
+  CHECK(morph_stick_figures(pair.source, pair.target, options).frames != rigid.frames);
+}
+
+TEST_CASE("morph_stick_figures: every method starts and ends exactly on the figures") {
+  const Pair pair = read_pair("compatible", "letter_b");
+  for (const MorphMethod method : {MorphMethod::Rigid, MorphMethod::Barycentric, MorphMethod::Linear}) {
+    CAPTURE(morph_method_name(method));
+    MorphStickFiguresOptions options;
+    options.method = method;
+    options.frames = 6;
+    const MorphStickFiguresResult result = morph_stick_figures(pair.source, pair.target, options);
+    REQUIRE(result.frames.size() == 6);
+    CHECK(result.times.front() == 0);
+    CHECK(result.times.back() == 1);
+    CHECK(result.frames.front() == pair.source.vertices);
+    CHECK(result.frames.back() == pair.target.vertices);
+    CHECK(result.triangulation.has_value() == (method != MorphMethod::Linear));
+    for (const std::vector<Vec2>& frame : result.frames) CHECK(frame.size() == pair.source.vertices.size());
+  }
 }
 
 TEST_CASE("morph_stick_figures passes the chosen options on") {
   const Pair pair = read_pair("compatible", "letter_a");
-  MorphStickFiguresOptions options;
-  options.frames = 4;
-  options.steiner = SteinerMethod::Sg2001;
-  options.weights = WeightKind::Floater;
-  options.enclosure_sides = 9;
-  options.verify = false;
-  const MorphStickFiguresResult result = morph_stick_figures(pair.source, pair.target, options);
-  REQUIRE(result.triangulation.has_value());
-  CHECK(result.triangulation->enclosure_vertices == 9);
-  CHECK(result.triangulation_options.method == SteinerMethod::Sg2001);
-  CHECK(result.morph_options.weights == WeightKind::Floater);
-  CHECK_FALSE(result.morph_options.verify);
-  CHECK(result.stats.verify_ms == 0);
+  for (const MorphMethod method : {MorphMethod::Barycentric, MorphMethod::Rigid}) {
+    CAPTURE(morph_method_name(method));
+    MorphStickFiguresOptions options;
+    options.method = method;
+    options.frames = 4;
+    options.steiner = SteinerMethod::Sg2001;
+    options.weights = WeightKind::Floater;
+    options.enclosure_sides = 9;
+    options.verify = false;
+    const MorphStickFiguresResult result = morph_stick_figures(pair.source, pair.target, options);
+    REQUIRE(result.triangulation.has_value());
+    CHECK(result.triangulation->enclosure_vertices == 9);
+    CHECK(result.triangulation_options.method == SteinerMethod::Sg2001);
+    CHECK(result.triangulation_options.enclosure_sides == 9);
+    CHECK(result.morph_options.weights == WeightKind::Floater);
+    CHECK(result.morph_options.frames == 4);
+    CHECK_FALSE(result.morph_options.verify);
+    CHECK(result.stats.verify_ms == 0);
+  }
 }
 
 TEST_CASE("morph_stick_figures with the linear method is linear_morph") {
@@ -122,9 +184,9 @@ TEST_CASE("morph_stick_figures with the linear method is linear_morph") {
   CHECK(result.stats.triangulate_ms == 0);
 }
 
-TEST_CASE("morph_stick_figures refuses incompatible figures with either method") {
+TEST_CASE("morph_stick_figures refuses incompatible figures with every method") {
   const Pair pair = read_pair("incompatible", "mirror_image");
-  for (const MorphMethod method : {MorphMethod::Barycentric, MorphMethod::Linear}) {
+  for (const MorphMethod method : {MorphMethod::Rigid, MorphMethod::Barycentric, MorphMethod::Linear}) {
     MorphStickFiguresOptions options;
     options.method = method;
     options.frames = 3;
@@ -160,14 +222,17 @@ TEST_CASE("check_morph_options refuses what the linear method would ignore, in t
   options.keep_node_frames = true;
   CHECK(refusal(options).find("node frames do not exist") != std::string::npos);
 
-  // The barycentric method takes every one of them.
-  MorphStickFiguresOptions all;
-  all.steiner = SteinerMethod::Aronov;
-  all.weights = WeightKind::Uniform;
-  all.enclosure_sides = 6;
-  all.verify = true;
-  all.keep_node_frames = true;
-  CHECK(refusal(all).empty());
+  // The barycentric and rigid methods take every one of them.
+  for (const MorphMethod method : {MorphMethod::Barycentric, MorphMethod::Rigid}) {
+    MorphStickFiguresOptions all;
+    all.method = method;
+    all.steiner = SteinerMethod::Aronov;
+    all.weights = WeightKind::Uniform;
+    all.enclosure_sides = 6;
+    all.verify = true;
+    all.keep_node_frames = true;
+    CHECK(refusal(all).empty());
+  }
 }
 
 TEST_CASE("check_morph_options checks the counts against argument_limits.h") {
@@ -204,16 +269,24 @@ TEST_CASE("the option-name table names every option once") {
     CHECK(seen.insert(int(row.option)).second);
     CHECK(keywords.insert(row.keyword).second);
   }
-  CHECK(seen.size() == std::size_t(Option::SmoothingRounds) + 1);
+  CHECK(seen.size() == std::size_t(Option::Easing) + 1);
+  CHECK(describe_option(Option::Rotation, OptionSpelling::CommandLine) == "option --rotation");
+  CHECK(describe_option(Option::Turns, OptionSpelling::Keyword) == "turns");
+  CHECK(describe_option(Option::Easing, OptionSpelling::CommandLine) == "option --easing");
   CHECK(describe_option(Option::EnclosureSides, OptionSpelling::CommandLine) == "option --enclosure-sides");
   // No CLI flag: messages fall back to the keyword.
   CHECK(describe_option(Option::SmoothingRounds, OptionSpelling::CommandLine) == "smoothing_rounds");
 }
 
-TEST_CASE("parse_morph_method knows both methods") {
+TEST_CASE("parse_morph_method knows the three methods") {
+  CHECK(parse_morph_method("rigid") == MorphMethod::Rigid);
+  CHECK(parse_morph_method("barycentric") == MorphMethod::Barycentric);
   CHECK(parse_morph_method("linear") == MorphMethod::Linear);
-  CHECK(morph_method_name(parse_morph_method("barycentric")) == "barycentric");
-  CHECK_THROWS_WITH(parse_morph_method("spline"), "unknown morph method 'spline' (choose barycentric or linear)");
+  for (const MorphMethod method : {MorphMethod::Rigid, MorphMethod::Barycentric, MorphMethod::Linear})
+    CHECK(parse_morph_method(morph_method_name(method)) == method);
+  CHECK_THROWS_AS(parse_morph_method("arap"), InvalidArgumentError);
+  CHECK_THROWS_WITH(parse_morph_method("spline"),
+                    "unknown morph method 'spline' (choose rigid, barycentric or linear)");
 }
 
 TEST_CASE("the pipeline's errors carry what callers need without parsing messages") {
@@ -238,7 +311,7 @@ TEST_CASE("the pipeline's errors carry what callers need without parsing message
     const Pair pair = read_pair("incompatible", "junction_rotation");
     const CompatibilityReport report = check_compatibility(pair.source, pair.target);
     REQUIRE_FALSE(report.compatible());
-    for (const MorphMethod method : {MorphMethod::Barycentric, MorphMethod::Linear}) {
+    for (const MorphMethod method : {MorphMethod::Rigid, MorphMethod::Barycentric, MorphMethod::Linear}) {
       MorphStickFiguresOptions options;
       options.method = method;
       try {
