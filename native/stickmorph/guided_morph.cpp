@@ -273,6 +273,11 @@ struct GuidedMorph::State {
     }
     own_motion.clear();
     if (!leaves_guide) return;
+    // As RigidGuide::parameter_at: a morph that does not move beyond
+    // rounding keeps the guide's timing.
+    double size = 0;
+    for (const Vec2& p : figure[0]) size = std::max({size, std::abs(p[0]), std::abs(p[1])});
+    for (const Vec2& p : figure[kTrustSamples]) size = std::max({size, std::abs(p[0]), std::abs(p[1])});
     own_motion.assign(kTrustSamples + 1, 0.0);
     for (int j = 1; j <= kTrustSamples; ++j) {
       long double sum = 0;
@@ -282,6 +287,7 @@ struct GuidedMorph::State {
       }
       own_motion[j] = own_motion[j - 1] + std::sqrt(double(sum / n));
     }
+    if (!(own_motion.back() > 1e-10 * size)) own_motion.clear();
   }
 
   // The morph parameter u at animation time t: even along the guide's

@@ -87,10 +87,32 @@ void morph_rigidly(const StickFigure& source, const StickFigure& target, const M
     };
     FigureTriangulationOptions triangulation_options = result.triangulation_options;
     triangulation_options.enclosed_points = guide_points(normalised.has_value());
-    // Only for the fallback below.
-    const std::vector<Vec2> unmapped_points = normalised ? guide_points(false) : std::vector<Vec2>{};
-    triangulation = triangulate_figures(source, normalised ? *normalised : target, triangulation_options,
-                                        &stats.triangulation);
+    // For the fallbacks below.
+    const std::vector<Vec2> unmapped_points = guide_points(false);
+    // The triangulation, each attempt verified exactly by triangulate_figures:
+    // the mapped-back pair in the enclosure around the guide; else the pair
+    // itself in it; else the paper's enclosure around the pair (where the
+    // barycentric method's triangulation exists, the rigid method's does).
+    // An attempt fails only where the spiderweb embedding of section 4
+    // finds no valid embedding of a face in both figures, which depends on
+    // the exact shapes; the last attempt's error is the one reported.
+    auto triangulate_pair_itself = [&] {
+      triangulation_options.enclosed_points = unmapped_points;
+      try {
+        triangulation = triangulate_figures(source, target, triangulation_options, &stats.triangulation);
+      } catch (const VerificationError&) {
+        triangulation = triangulate_figures(source, target, result.triangulation_options, &stats.triangulation);
+      }
+    };
+    bool mapped_back = normalised.has_value();
+    if (mapped_back) {
+      try {
+        triangulation = triangulate_figures(source, *normalised, triangulation_options, &stats.triangulation);
+      } catch (const VerificationError&) {
+        mapped_back = false;
+      }
+    }
+    if (!mapped_back) triangulate_pair_itself();
     stats.triangulate_ms = milliseconds_since(start);
 
     start = std::chrono::steady_clock::now();
@@ -101,16 +123,15 @@ void morph_rigidly(const StickFigure& source, const StickFigure& target, const M
       guide.reset();
       morph.emplace(triangulation, source, target.vertices, factored, std::move(own), weights, easing);
     };
-    if (normalised) {
+    if (mapped_back) {
       try {
         make(similarity);
         stats.similarity_factored = true;
       } catch (const VerificationError&) {
         // The triangulation moved to the target by the similarity lost a
         // nearly flat triangle to rounding: triangulate the pair itself.
-        triangulation_options.enclosed_points = unmapped_points;
         const auto again = std::chrono::steady_clock::now();
-        triangulation = triangulate_figures(source, target, triangulation_options, &stats.triangulation);
+        triangulate_pair_itself();
         stats.triangulate_ms += milliseconds_since(again);
       }
     }

@@ -50,10 +50,11 @@ enum class MorphMethod {
 MorphMethod parse_morph_method(const std::string& name);
 std::string morph_method_name(MorphMethod method);
 
-/// What to run. The options that only the barycentric method uses are
-/// optional: unset means the default, set means the caller asked for it, and
-/// asking for one with the linear method is refused (it would be silently
-/// ignored otherwise: a user who asked for a setting would get something else).
+/// What to run. The options that only some methods use are optional: unset
+/// means the default, set means the caller asked for it, and asking for one
+/// with a method that would ignore it is refused (the triangulation's options
+/// with the linear method, the rotation's and the easing with any method but
+/// rigid): a user who asked for a setting would get something else.
 struct MorphStickFiguresOptions {
   MorphMethod method = MorphMethod::Rigid;
   /// N, kMinMorphFrames to kMaxMorphFrames: t_f = f / (N - 1). long long so
@@ -70,8 +71,8 @@ struct MorphStickFiguresOptions {
   std::optional<Easing> easing;                ///< default Easing::None (even speed)
   /// Also return every frame with all n+k+s triangulation nodes
   /// (MorphStickFiguresResult::node_frames), for drawing the triangulation
-  /// under the figure or re-checking its triangles. Barycentric only; the
-  /// linear method has no helper nodes, so there it is refused too.
+  /// under the figure or re-checking its triangles. Rigid and barycentric
+  /// only; the linear method has no helper nodes, so there it is refused.
   bool keep_node_frames = false;
   /// How messages name options: as the CLI's flags or as keywords.
   OptionSpelling spelling = OptionSpelling::Keyword;
@@ -120,7 +121,7 @@ struct MorphStickFiguresResult {
   /// enclosure is the source's rotated, scaled and moved (GuidedMorph).
   std::optional<FigureTriangulation> triangulation;
   /// The options in effect, defaults filled in (for reports such as the
-  /// CLI's stats); meaningful for barycentric.
+  /// CLI's stats); meaningful for rigid and barycentric.
   FigureTriangulationOptions triangulation_options;
   MorphOptions morph_options;
   MorphStickFiguresStats stats;

@@ -138,7 +138,8 @@ struct RigidGuide::State {
   std::vector<Vec2> source, target;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> laplacian;
   int unknowns = 0;
-  std::vector<double> motion;  // cumulative RMS displacement at u = j / kMotionSamples, normalised to [0, 1]
+  std::vector<double> motion;  // cumulative RMS displacement at u = j / kMotionSamples
+  double still_motion = 0;     // a total motion at or below this is rounding noise
 };
 
 RigidGuide::RigidGuide(const StickFigure& source, const std::vector<Vec2>& target_vertices,
@@ -220,7 +221,14 @@ RigidGuide::RigidGuide(const StickFigure& source, const std::vector<Vec2>& targe
     if (s.laplacian.info() != Eigen::Success)
       throw InternalError("RigidGuide: the figure's reduced Laplacian is not positive definite");
   }
-  // The cumulative motion table for even speed.
+  // The cumulative motion table for even speed. A figure that does not
+  // move still shows rounding noise of the size's order times the unit
+  // roundoff per sample; far below any motion an animation shows.
+  double size = 0;
+  for (int v = 0; v < s.n; ++v)
+    size = std::max({size, std::abs(s.source[v][0]), std::abs(s.source[v][1]), std::abs(s.target[v][0]),
+                     std::abs(s.target[v][1])});
+  s.still_motion = 1e-10 * size;
   s.motion.assign(kMotionSamples + 1, 0.0);
   std::vector<Vec2> previous = s.source;
   for (int j = 1; j <= kMotionSamples; ++j) {
@@ -280,7 +288,9 @@ double RigidGuide::parameter_at(double t, Easing easing) const {
   const State& s = *state_;
   const double total = s.motion.back();
   const double eased = ease(t, easing);
-  if (!(total > 0)) return eased;  // nothing moves: any parametrisation is even
+  // Nothing moves (the table then holds only rounding noise): any
+  // parametrisation is even, so keep the (eased) time.
+  if (!(total > s.still_motion)) return eased;
   const double goal = eased * total;
   // The first sample at or beyond the goal; linear in between.
   const auto it = std::lower_bound(s.motion.begin(), s.motion.end(), goal);

@@ -59,7 +59,8 @@ class RigidGuide {
   /// The morph parameter at animation time t in [0, 1] such that the guide
   /// moves evenly (equal RMS vertex displacement per equal step of eased
   /// time): the cumulative motion, sampled finely, inverted. 0 -> 0 and
-  /// 1 -> 1 exactly; increasing. A guide that does not move keeps t.
+  /// 1 -> 1 exactly; increasing. A guide that does not move (beyond
+  /// rounding) keeps t, eased.
   double parameter_at(double t, Easing easing = Easing::None) const;
 
  private:

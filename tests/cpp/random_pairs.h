@@ -590,8 +590,8 @@ struct PipelineStats {
   int frames_verified = 0;
 };
 
-/// The whole pipeline on a pair with the default options (improved Steiner
-/// method, mean value weights), through the engine's one entry
+/// The whole pipeline on a pair with the default options (the rigid method,
+/// improved Steiner method, mean value weights), through the engine's one entry
 /// morph_stick_figures with `frames` frames, then checked again
 /// independently of the engine's own checks: the triangulation verified
 /// again, endpoints exact, frames of the figure's n vertices only, every
@@ -607,7 +607,7 @@ inline std::string morph_and_verify(const StickFigure& source, const StickFigure
     // The triangles can only be re-checked on every node's position.
     options.keep_node_frames = true;
     const MorphStickFiguresResult result = morph_stick_figures(source, target, options);
-    if (!result.triangulation) return "the barycentric morph returned no triangulation";
+    if (!result.triangulation) return "the morph returned no triangulation";
     const FigureTriangulation& tri = *result.triangulation;
     verify_figure_triangulation(tri, source);
     if (int(result.frames.size()) != frames || int(result.times.size()) != frames ||

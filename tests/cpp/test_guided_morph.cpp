@@ -604,18 +604,12 @@ TEST_CASE("the rigid method is the default and reports its similarity", "[guided
   CHECK(result.stats.triangulate_ms > 0);
   CHECK(result.stats.morph_ms > 0);
 }
-// FIXME(engine bug, morph_stick_figures.cpp, morph_rigidly): when the
-// source and the target mapped back by the similarity cannot be
-// triangulated (triangulate_figures throws VerificationError: "exterior face
-// (face 0, cut at vertex 15): no valid embedding of the spiderweb was found
-// in both polygons (109 corners, method improved) ..."), the rigid method
-// fails instead of falling back to the pair itself, as it does when the
-// mapped-back target is not a figure or GuidedMorph refuses the moved
-// triangulation. The barycentric method morphs this pair (145 Steiner
-// vertices), so the default method now refuses a pair the paper's morph
-// handles; test_morph_figures.cpp's regression test fails on it too.
+// A pair whose source and mapped-back target cannot be triangulated (the
+// spiderweb of section 4 finds no embedding of the exterior face in both):
+// the rigid method falls back to the pair itself, as the barycentric
+// method triangulates it (145 Steiner vertices).
 TEST_CASE("the rigid morph handles a regression pair whose normalised target does not triangulate",
-          "[guided_morph][!mayfail]") {
+          "[guided_morph]") {
   constexpr int N = 10;
   const Pair pair = read_pair("regressions/random_near_touching_seed381076493457");
   MorphStickFiguresOptions options;

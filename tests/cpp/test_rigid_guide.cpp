@@ -228,15 +228,9 @@ TEST_CASE("RigidGuide of a figure that does not move stays put", "[rigid_guide]"
   for (double u : {0.0, 0.2, 0.5, 0.9, 1.0}) check_close(guide.at(u), source.vertices, 1e-12);
 }
 
-// FIXME(engine bug, rigid_guide.cpp, RigidGuide::parameter_at): the header
-// promises "A guide that does not move keeps t", but the cumulative motion
-// table of a still guide holds rounding noise (at(u) differs from the source
-// by ~1e-16), so `total > 0` and the noise is inverted: for this heptagon
-// into itself parameter_at(0.2) was 0.166 at 81dfc33 and 0.086 at dd35aee,
-// parameter_at(0.5) 0.441 and 0.299. Harmless to the picture (every frame
-// is the source), but the contract is broken; a threshold relative to the
-// figure's size would fix it.
-TEST_CASE("RigidGuide of a figure that does not move keeps the time", "[rigid_guide][!mayfail]") {
+// A still guide's motion table holds only rounding noise (at(u) differs from
+// the source by ~1e-16); inverting it would warp the time for nothing.
+TEST_CASE("RigidGuide of a figure that does not move keeps the time", "[rigid_guide]") {
   const StickFigure source = heptagon();
   const RigidGuide guide = guide_between(source, source.vertices);
   for (double t : {0.0, 0.2, 0.5, 0.9, 1.0}) CHECK(guide.parameter_at(t) == t);
