@@ -62,12 +62,18 @@ sm::MorphStickFiguresOptions to_morph_options(const py::object& frames, const py
   return options;
 }
 
-py::dict rigid_dict(const sm::MorphStickFiguresStats& stats, const sm::MorphStickFiguresOptions& options) {
+// The similarity the rigid method fitted, as stats["rigid"]["similarity"].
+py::dict similarity_dict(const sm::SimilarityMotion& sim) {
   py::dict similarity;
-  similarity["angle_degrees"] = stats.similarity.angle * 180.0 / 3.14159265358979323846;
-  similarity["scale"] = stats.similarity.scale;
-  similarity["source_center"] = py::make_tuple(stats.similarity.source_center[0], stats.similarity.source_center[1]);
-  similarity["target_center"] = py::make_tuple(stats.similarity.target_center[0], stats.similarity.target_center[1]);
+  similarity["angle_degrees"] = sim.angle * 180.0 / 3.14159265358979323846;
+  similarity["scale"] = sim.scale;
+  similarity["source_center"] = py::make_tuple(sim.source_center[0], sim.source_center[1]);
+  similarity["target_center"] = py::make_tuple(sim.target_center[0], sim.target_center[1]);
+  return similarity;
+}
+
+py::dict rigid_dict(const sm::MorphStickFiguresStats& stats, const sm::MorphStickFiguresOptions& options) {
+  const py::dict similarity = similarity_dict(stats.similarity);
   py::dict guide_frames;
   guide_frames["exact"] = stats.guide_exact_frames;
   guide_frames["blended"] = stats.guide_blended_frames;
@@ -261,6 +267,32 @@ class MorphSolverBinding {
   std::mutex mutex_;
 };
 
+// stickmorph.RigidMorphSolver: the rigid method's GuidedMorph, made once,
+// then any animation time t, each frame checked exactly as morph()'s are.
+class RigidMorphSolverBinding {
+ public:
+  RigidMorphSolverBinding(const sm::StickFigure& source, const sm::StickFigure& target,
+                          const sm::MorphStickFiguresOptions& options)
+      : morph_(sm::prepare_rigid_morph(source, target, options, &stats_)), n_(int(source.vertices.size())) {}
+
+  std::vector<sm::Vec2> solve(double t, bool verify) {
+    // One frame at a time: the morph keeps its blended weights between
+    // calls, and the GIL is released while it runs.
+    std::lock_guard<std::mutex> lock(mutex_);
+    return morph_.frame(t, -1, verify, "RigidMorphSolver.solve: ").positions;
+  }
+
+  int figure_vertices() const { return n_; }
+  const sm::FigureTriangulation& triangulation() const { return morph_.triangulation(); }
+  const sm::MorphStickFiguresStats& stats() const { return stats_; }
+
+ private:
+  sm::MorphStickFiguresStats stats_;
+  sm::GuidedMorph morph_;
+  const int n_;
+  std::mutex mutex_;
+};
+
 }  // namespace
 
 void bind_morph(py::module_& m) {
@@ -376,6 +408,93 @@ Raises:
           },
           "What the solver spent so far: \"factorizations\" (int, numeric LU factorizations), "
           "\"factorize_ms\" and \"solve_ms\" (float, milliseconds).");
+
+  py::class_<RigidMorphSolverBinding>(m, "RigidMorphSolver", R"doc(The rigid morph at any time t, for scrubbing (issue 12; morph(method="rigid")).
+
+RigidMorphSolver(source_xy, target_xy, edges, steiner=None, weights=None,
+enclosure_sides=None, rotation=None, turns=None, easing=None,
+target_edges=None) does once what morph() does before its frames: fits
+the similarity, triangulates the pair inside an enclosure that holds the
+rigid guide's way, and samples the guide. solve(t) then gives the figure at
+any animation time t in [0, 1], in any order, checked exactly as morph()'s
+frames are. Solving morph()'s times k/(N-1) gives morph()'s frames.
+
+Arguments as for morph() (method is always "rigid").
+
+Raises:
+  as morph().
+
+A RigidMorphSolver may be shared between threads: solves run one at a
+time, without the GIL.)doc")
+      .def(py::init([](const py::object& source_xy, const py::object& target_xy, const py::object& edges,
+                       const py::object& steiner, const py::object& weights, const py::object& enclosure_sides,
+                       const py::object& rotation, const py::object& turns, const py::object& easing,
+                       const py::object& target_edges) {
+             // Arguments first, figures second, as morph() does; frames is
+             // morph()'s default, unused here.
+             const sm::MorphStickFiguresOptions options =
+                 to_morph_options(py::int_(sm::kDefaultMorphFrames), steiner, weights, enclosure_sides,
+                                  py::str("rigid"), py::none(), rotation, turns, easing);
+             const auto figures =
+                 make_figure_pair(source_xy, target_xy, edges, target_edges, "source_xy", "target_xy");
+             py::gil_scoped_release release;
+             return std::make_unique<RigidMorphSolverBinding>(figures.first, figures.second, options);
+           }),
+           py::arg("source_xy"), py::arg("target_xy"), py::arg("edges"), py::arg("steiner") = py::none(),
+           py::arg("weights") = py::none(), py::arg("enclosure_sides") = py::none(),
+           py::arg("rotation") = py::none(), py::arg("turns") = py::none(), py::arg("easing") = py::none(),
+           py::arg("target_edges") = py::none())
+      .def(
+          "solve",
+          [](RigidMorphSolverBinding& self, const py::object& t, const py::object& all_nodes,
+             const py::object& verify) {
+            const double time = to_time(t);
+            const bool all = to_flag(all_nodes, "all_nodes");
+            const bool check = to_flag(verify, "verify");
+            std::vector<sm::Vec2> positions;
+            {
+              py::gil_scoped_release release;
+              positions = self.solve(time, check);
+              if (!all) positions.resize(static_cast<std::size_t>(self.figure_vertices()));
+            }
+            return to_point_array(positions);
+          },
+          py::arg("t"), py::kw_only(), py::arg("all_nodes") = false, py::arg("verify") = true,
+          R"doc(The rigid morph at animation time t.
+
+Args:
+  t: a number in [0, 1]; 0 is the source, 1 the target.
+  all_nodes: return all n+k+s nodes of the triangulation (in output space:
+    the enclosure moves with the figure's similarity) instead of the
+    figure's n vertices.
+  verify: check the frame exactly (default True): the moved enclosure
+    convex, every triangle counter-clockwise, the figure a stick figure
+    compatible with the source; a frame that fails falls back as in morph().
+
+Returns:
+  #n by 2 float64 ndarray (with all_nodes=True, (n+k+s) by 2). At t = 0 and
+  t = 1 exactly the source and the target.
+
+Raises:
+  InvalidArgumentError: t outside [0, 1], NaN or not a number; all_nodes or
+    verify not a bool.
+  VerificationError: with verify=True, no candidate frame passed the exact
+    check; the message names t.)doc")
+      .def_property_readonly(
+          "triangulation",
+          [](const RigidMorphSolverBinding& self) {
+            return triangulation_dict(self.triangulation(), self.stats().triangulation);
+          },
+          "The triangulation the morph uses, as morph()'s \"triangulation\" (output space).")
+      .def_property_readonly(
+          "similarity",
+          [](const RigidMorphSolverBinding& self) {
+            py::dict dict = similarity_dict(self.stats().similarity);
+            dict["factored"] = self.stats().similarity_factored;
+            return dict;
+          },
+          "The similarity fitted between the figures: \"angle_degrees\", \"scale\", \"source_center\", "
+          "\"target_center\", and \"factored\" (bool), as in morph()'s stats[\"rigid\"].");
 
   m.def(
       "morph",

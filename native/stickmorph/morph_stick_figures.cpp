@@ -54,9 +54,10 @@ std::optional<StickFigure> normalised_target(const StickFigure& source, const St
   }
 }
 
-void morph_rigidly(const StickFigure& source, const StickFigure& target, const MorphStickFiguresOptions& options,
-                   MorphStickFiguresResult& result) {
-  MorphStickFiguresStats& stats = result.stats;
+GuidedMorph prepare_rigid_morph_checked(const StickFigure& source, const StickFigure& target,
+                                        const MorphStickFiguresOptions& options,
+                                        const FigureTriangulationOptions& paper_options, WeightKind weights,
+                                        MorphStickFiguresStats& stats) {
   // The user's pair must be compatible: its report, not the mapped-back one's.
   require_compatible(source, target);
   const SimilarityMotion similarity =
@@ -65,10 +66,7 @@ void morph_rigidly(const StickFigure& source, const StickFigure& target, const M
   stats.similarity = similarity;
   FigureTriangulation triangulation;
   std::optional<GuidedMorph> morph;
-  MorphResult morphed;
-  GuidedMorphStats guided;
   const Easing easing = options.easing.value_or(Easing::None);
-  const WeightKind weights = result.morph_options.weights;
   try {
     auto start = std::chrono::steady_clock::now();
     const std::optional<StickFigure> normalised = normalised_target(source, target, similarity);
@@ -85,7 +83,7 @@ void morph_rigidly(const StickFigure& source, const StickFigure& target, const M
       }
       return points;
     };
-    FigureTriangulationOptions triangulation_options = result.triangulation_options;
+    FigureTriangulationOptions triangulation_options = paper_options;
     triangulation_options.enclosed_points = guide_points(normalised.has_value());
     // For the fallbacks below.
     const std::vector<Vec2> unmapped_points = guide_points(false);
@@ -101,7 +99,7 @@ void morph_rigidly(const StickFigure& source, const StickFigure& target, const M
       try {
         triangulation = triangulate_figures(source, target, triangulation_options, &stats.triangulation);
       } catch (const VerificationError&) {
-        triangulation = triangulate_figures(source, target, result.triangulation_options, &stats.triangulation);
+        triangulation = triangulate_figures(source, target, paper_options, &stats.triangulation);
       }
     };
     bool mapped_back = normalised.has_value();
@@ -137,16 +135,31 @@ void morph_rigidly(const StickFigure& source, const StickFigure& target, const M
     }
     if (!morph) make(SimilarityMotion{});
     const double setup_ms = milliseconds_since(start);
-    start = std::chrono::steady_clock::now();
-    morphed = guided_morph(*morph, result.morph_options.frames, result.morph_options.verify, &guided);
-    stats.morph_ms = setup_ms + milliseconds_since(start);
     stats.factorize_ms = setup_ms;
+    stats.steiner_vertices = triangulation.steiner_vertices;
+    stats.triangles = int(triangulation.triangles.size());
+    return std::move(*morph);
   } catch (const InvalidArgumentError& error) {
     throw InternalError(std::string("morph_stick_figures: the engine refused its own intermediate result: ") +
                         error.what());
   }
-  stats.steiner_vertices = triangulation.steiner_vertices;
-  stats.triangles = int(triangulation.triangles.size());
+}
+
+void morph_rigidly(const StickFigure& source, const StickFigure& target, const MorphStickFiguresOptions& options,
+                   MorphStickFiguresResult& result) {
+  MorphStickFiguresStats& stats = result.stats;
+  GuidedMorph morph = prepare_rigid_morph_checked(source, target, options, result.triangulation_options,
+                                                  result.morph_options.weights, stats);
+  GuidedMorphStats guided;
+  const auto start = std::chrono::steady_clock::now();
+  MorphResult morphed;
+  try {
+    morphed = guided_morph(morph, result.morph_options.frames, result.morph_options.verify, &guided);
+  } catch (const InvalidArgumentError& error) {
+    throw InternalError(std::string("morph_stick_figures: the engine refused its own intermediate result: ") +
+                        error.what());
+  }
+  stats.morph_ms = stats.factorize_ms + milliseconds_since(start);
   stats.solve_ms = morphed.stats.solve_ms;
   stats.verify_ms = morphed.stats.verify_ms;
   stats.refined_frames = guided.refined_frames;
@@ -158,7 +171,7 @@ void morph_rigidly(const StickFigure& source, const StickFigure& target, const M
     result.frames.emplace_back(frame.begin(), frame.begin() + static_cast<std::ptrdiff_t>(n));
   if (options.keep_node_frames) result.node_frames = std::move(morphed.frames);
   result.times = std::move(morphed.times);
-  result.triangulation = morph->triangulation();
+  result.triangulation = morph.triangulation();
 }
 
 }  // namespace
@@ -215,6 +228,22 @@ void check_morph_options(const MorphStickFiguresOptions& options) {
   }
   if (options.enclosure_sides) check_enclosure_sides(*options.enclosure_sides, options.spelling);
   if (options.turns) check_turns(*options.turns, options.spelling);
+}
+
+GuidedMorph prepare_rigid_morph(const StickFigure& source, const StickFigure& target,
+                                const MorphStickFiguresOptions& options, MorphStickFiguresStats* stats) {
+  if (options.method != MorphMethod::Rigid)
+    throw InvalidArgumentError("prepare_rigid_morph is the rigid method's; method is " +
+                               morph_method_name(options.method));
+  check_morph_options(options);
+  FigureTriangulationOptions paper;
+  paper.method = options.steiner.value_or(SteinerMethod::Improved);
+  paper.enclosure_sides = options.enclosure_sides ? int(*options.enclosure_sides) : kDefaultEnclosureSides;
+  MorphStickFiguresStats measured;
+  GuidedMorph morph = prepare_rigid_morph_checked(source, target, options, paper,
+                                                  options.weights.value_or(WeightKind::MeanValue), measured);
+  if (stats) *stats = measured;
+  return morph;
 }
 
 MorphStickFiguresResult morph_stick_figures(const StickFigure& source, const StickFigure& target,

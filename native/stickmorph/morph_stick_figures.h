@@ -146,4 +146,14 @@ void check_morph_options(const MorphStickFiguresOptions& options);
 MorphStickFiguresResult morph_stick_figures(const StickFigure& source, const StickFigure& target,
                                             const MorphStickFiguresOptions& options = {});
 
+/// The rigid method up to its frames (options.method must be Rigid): the
+/// similarity fitted, the pair triangulated in the guide's enclosure, the
+/// GuidedMorph built. GuidedMorph::frame(t) then gives the frame at any
+/// animation time, checked exactly: what morph_stick_figures computes for its
+/// times f / (N - 1), for scrubbing (stickmorph.RigidMorphSolver). `stats`,
+/// if given, receives the similarity, the counts and the set-up times.
+/// @throws as morph_stick_figures; InvalidArgumentError for another method.
+GuidedMorph prepare_rigid_morph(const StickFigure& source, const StickFigure& target,
+                                const MorphStickFiguresOptions& options, MorphStickFiguresStats* stats = nullptr);
+
 }  // namespace stickmorph
