@@ -61,6 +61,16 @@ CASES = {
         "tests/data/pairs/compatible/letter_b.target.json",
         ["--frames", "5", "--method", "barycentric", "--steiner", "sg2001", "--weights", "uniform",
          "--enclosure-sides", "8"]),
+    # The rigid method, the default (issue 12): the paper's S into U, whose guide it follows only
+    # where valid, and the demo's sample.
+    "s_to_u_rigid": ("tests/data/paper/s_to_u.source.json", "tests/data/paper/s_to_u.target.json",
+                     ["--frames", "7"]),
+    "monkey_to_player_rigid": ("blend_samples/figures/monkey_to_player.source.json",
+                               "blend_samples/figures/monkey_to_player.target.json", ["--frames", "5"]),
+    # Its options: the other way round with a whole extra turn, eased.
+    "letter_a_rigid_ccw_turn_eased": (
+        "tests/data/pairs/compatible/letter_a.source.json", "tests/data/pairs/compatible/letter_a.target.json",
+        ["--frames", "6", "--rotation", "ccw", "--turns", "1", "--easing", "in-out"]),
 }
 
 
