@@ -231,8 +231,9 @@ std::string run_spiderweb(const std::string& family, int requested, SteinerMetho
   return record.str();
 }
 
-/// improved: the whole pipeline, then our frames re-checked one by one and
-/// the straight-line morph's frames counted.
+/// improved: the whole pipeline (the default, rigid method), then our frames
+/// re-checked one by one, the barycentric morph timed and the straight-line
+/// morph's frames counted.
 std::string run_improved(const std::string& family, int requested, int frames) {
   Record record;
   const Figures figures = make_figures(family, requested);
@@ -263,6 +264,17 @@ std::string run_improved(const std::string& family, int requested, int frames) {
   for (const std::vector<Vec2>& frame : morph.frames)
     if (!is_frame_valid(source, decomposition, frame)) ++invalid;
   record.set("invalid_frames", invalid);
+
+  // The paper's morph (method barycentric, on its own triangulation), for
+  // the cost per frame of the rigid default against it (issue 12).
+  MorphStickFiguresOptions paper;
+  paper.method = MorphMethod::Barycentric;
+  paper.frames = frames;
+  const MorphStickFiguresResult barycentric = morph_stick_figures(source, figures.target, paper);
+  record.set("barycentric_morph_ms", barycentric.stats.morph_ms)
+      .set("barycentric_steiner", barycentric.stats.steiner_vertices);
+  record.set("guide_exact_frames", morph.stats.guide_exact_frames)
+      .set("guide_blended_frames", morph.stats.guide_blended_frames);
 
   MorphStickFiguresOptions straight;
   straight.method = MorphMethod::Linear;
