@@ -229,6 +229,23 @@ double to_time(const py::object& object) {
   return t;
 }
 
+// solve(t, all_nodes=, verify=) of MorphSolver and RigidMorphSolver: the
+// arguments checked, the frame solved without the GIL, the figure's part.
+template <class Binding>
+py::array_t<double> solve_binding(Binding& self, const py::object& t, const py::object& all_nodes,
+                                  const py::object& verify) {
+  const double time = to_time(t);
+  const bool all = to_flag(all_nodes, "all_nodes");
+  const bool check = to_flag(verify, "verify");
+  std::vector<sm::Vec2> positions;
+  {
+    py::gil_scoped_release release;
+    positions = self.solve(time, check);
+    if (!all) positions.resize(static_cast<std::size_t>(self.figure_vertices()));
+  }
+  return to_point_array(positions);
+}
+
 // stickmorph.MorphSolver: the engine's MorphSolver with the per-frame
 // check and repair of morph_triangulation, so that a scrubbed frame is
 // verified as a morph's frame is.
@@ -352,16 +369,7 @@ without the GIL.)doc")
       .def(
           "solve",
           [](MorphSolverBinding& self, const py::object& t, const py::object& all_nodes, const py::object& verify) {
-            const double time = to_time(t);
-            const bool all = to_flag(all_nodes, "all_nodes");
-            const bool check = to_flag(verify, "verify");
-            std::vector<sm::Vec2> positions;
-            {
-              py::gil_scoped_release release;
-              positions = self.solve(time, check);
-              if (!all) positions.resize(static_cast<std::size_t>(self.figure_vertices()));
-            }
-            return to_point_array(positions);
+            return solve_binding(self, t, all_nodes, verify);
           },
           py::arg("t"), py::kw_only(), py::arg("all_nodes") = false, py::arg("verify") = true,
           R"doc(The morph at time t.
@@ -448,16 +456,7 @@ time, without the GIL.)doc")
           "solve",
           [](RigidMorphSolverBinding& self, const py::object& t, const py::object& all_nodes,
              const py::object& verify) {
-            const double time = to_time(t);
-            const bool all = to_flag(all_nodes, "all_nodes");
-            const bool check = to_flag(verify, "verify");
-            std::vector<sm::Vec2> positions;
-            {
-              py::gil_scoped_release release;
-              positions = self.solve(time, check);
-              if (!all) positions.resize(static_cast<std::size_t>(self.figure_vertices()));
-            }
-            return to_point_array(positions);
+            return solve_binding(self, t, all_nodes, verify);
           },
           py::arg("t"), py::kw_only(), py::arg("all_nodes") = false, py::arg("verify") = true,
           R"doc(The rigid morph at animation time t.

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "figures.h"
+#include "motion_helpers.h"
 #include "stickmorph/errors.h"
 #include "stickmorph/frame_verification.h"
 #include "stickmorph/guided_morph.h"
@@ -51,11 +52,6 @@ StickFigure with_vertices(const StickFigure& f, std::vector<Vec2> vertices) {
   return g;
 }
 
-Vec2 vector_of(const std::vector<Vec2>& p, const Edge& e) { return {p[e[1]][0] - p[e[0]][0], p[e[1]][1] - p[e[0]][1]}; }
-double length_of(const std::vector<Vec2>& p, const Edge& e) {
-  const Vec2 d = vector_of(p, e);
-  return std::hypot(d[0], d[1]);
-}
 // The signed angle from edge e's direction in a to its direction in b, in (-pi, pi].
 double turn_between(const std::vector<Vec2>& a, const std::vector<Vec2>& b, const Edge& e) {
   const Vec2 u = vector_of(a, e), v = vector_of(b, e);
@@ -68,24 +64,8 @@ double unwrapped_turn(const std::vector<std::vector<Vec2>>& frames, const Edge& 
   return total;
 }
 
-Vec2 mean(const std::vector<Vec2>& points) {
-  Vec2 m{0, 0};
-  for (const Vec2& p : points) m = {m[0] + p[0], m[1] + p[1]};
-  return {m[0] / points.size(), m[1] / points.size()};
-}
 
-double rms_radius(const std::vector<Vec2>& points) {
-  const Vec2 c = mean(points);
-  double sum = 0;
-  for (const Vec2& p : points) sum += (p[0] - c[0]) * (p[0] - c[0]) + (p[1] - c[1]) * (p[1] - c[1]);
-  return std::sqrt(sum / points.size());
-}
 
-void check_close(const std::vector<Vec2>& a, const std::vector<Vec2>& b, double margin) {
-  REQUIRE(a.size() == b.size());
-  for (std::size_t v = 0; v < a.size(); ++v)
-    for (int c = 0; c < 2; ++c) CHECK(a[v][c] == Approx(b[v][c]).margin(margin));
-}
 
 MorphStickFiguresResult morph_rigid(const StickFigure& source, const StickFigure& target, int frames,
                                     bool keep_node_frames = false) {

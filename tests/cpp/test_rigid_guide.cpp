@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "figures.h"
+#include "motion_helpers.h"
 #include "stickmorph/errors.h"
 #include "stickmorph/rigid_guide.h"
 #include "stickmorph/similarity_motion.h"
@@ -19,27 +20,8 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-double wrap(double a) {  // into (-pi, pi]
-  a = std::fmod(a + kPi, 2 * kPi);
-  if (a <= 0) a += 2 * kPi;
-  return a - kPi;
-}
 
-Vec2 vector_of(const std::vector<Vec2>& p, const Edge& e) { return {p[e[1]][0] - p[e[0]][0], p[e[1]][1] - p[e[0]][1]}; }
-double length_of(const std::vector<Vec2>& p, const Edge& e) {
-  const Vec2 d = vector_of(p, e);
-  return std::hypot(d[0], d[1]);
-}
-double angle_of(const std::vector<Vec2>& p, const Edge& e) {
-  const Vec2 d = vector_of(p, e);
-  return std::atan2(d[1], d[0]);
-}
 
-Vec2 mean(const std::vector<Vec2>& points) {
-  Vec2 m{0, 0};
-  for (const Vec2& p : points) m = {m[0] + p[0], m[1] + p[1]};
-  return {m[0] / points.size(), m[1] / points.size()};
-}
 
 // Root mean square of the vertex displacements from a to b.
 double rms_step(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
@@ -49,11 +31,6 @@ double rms_step(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
   return std::sqrt(sum / a.size());
 }
 
-void check_close(const std::vector<Vec2>& a, const std::vector<Vec2>& b, double margin) {
-  REQUIRE(a.size() == b.size());
-  for (std::size_t v = 0; v < a.size(); ++v)
-    for (int c = 0; c < 2; ++c) CHECK(a[v][c] == Approx(b[v][c]).margin(margin));
-}
 
 RigidGuide guide_between(const StickFigure& source, const std::vector<Vec2>& target,
                          RotationDirection direction = RotationDirection::Short, int turns = 0) {

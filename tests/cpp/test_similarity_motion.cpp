@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "figures.h"
+#include "motion_helpers.h"
 #include "stickmorph/errors.h"
 #include "stickmorph/similarity_motion.h"
 
@@ -32,24 +33,8 @@ std::vector<Vec2> similar(const std::vector<Vec2>& points, double angle, double 
   return out;
 }
 
-Vec2 mean(const std::vector<Vec2>& points) {
-  Vec2 m{0, 0};
-  for (const Vec2& p : points) m = {m[0] + p[0], m[1] + p[1]};
-  return {m[0] / points.size(), m[1] / points.size()};
-}
 
-double rms_radius(const std::vector<Vec2>& points) {
-  const Vec2 c = mean(points);
-  double sum = 0;
-  for (const Vec2& p : points) sum += (p[0] - c[0]) * (p[0] - c[0]) + (p[1] - c[1]) * (p[1] - c[1]);
-  return std::sqrt(sum / points.size());
-}
 
-void check_close(const std::vector<Vec2>& a, const std::vector<Vec2>& b, double margin) {
-  REQUIRE(a.size() == b.size());
-  for (std::size_t v = 0; v < a.size(); ++v)
-    for (int c = 0; c < 2; ++c) CHECK(a[v][c] == Approx(b[v][c]).margin(margin));
-}
 
 }  // namespace
 
