@@ -27,6 +27,7 @@ import numpy as np
 import pytest
 
 import stickmorph
+from rigid_stats import check_rigid_section
 
 TIMEOUT_SECONDS = 120
 SVG = "{http://www.w3.org/2000/svg}"
@@ -45,7 +46,6 @@ MORPH_STATS_BARYCENTRIC = {"steiner_vertices", "triangles", "milliseconds", "met
                            "enclosure_sides", "weights", "verified", "refined_frames"}
 MORPH_STATS_RIGID = MORPH_STATS_BARYCENTRIC | {"factorizations", "rigid"}
 MORPH_STATS_LINEAR = {"steiner_vertices", "triangles", "milliseconds", "method", "invalid_frames"}
-RIGID_STATS = {"rotation", "turns", "easing", "similarity_factored", "similarity", "guide_frames"}
 TRIANGULATION_KEYS = {"figure_vertices", "enclosure_vertices", "steiner_vertices", "source", "target",
                       "triangles"}
 
@@ -159,43 +159,8 @@ def check_triangulation_object(tri, source_vertices, target_vertices, edges, sim
 
 def check_rigid_stats(stats, source_vertices, target_vertices, frames, rotation="short", turns=0,
                       easing="none"):
-    """stats["rigid"] of a rigid morph (docs/CLI.md), the fitted similarity
-    recomputed here (Procrustes on the vertices)."""
-    rigid = stats["rigid"]
-    assert set(rigid) == RIGID_STATS
-    assert (rigid["rotation"], rigid["turns"], rigid["easing"]) == (rotation, turns, easing)
-    assert type(rigid["turns"]) is int and type(rigid["similarity_factored"]) is bool
-    similarity = rigid["similarity"]
-    assert set(similarity) == {"angle_degrees", "scale", "source_center", "target_center"}
-    assert type(similarity["angle_degrees"]) is float and math.isfinite(similarity["angle_degrees"])
-    assert type(similarity["scale"]) is float and similarity["scale"] > 0
-    source, target = np.array(source_vertices), np.array(target_vertices)
-    for center, points in ((similarity["source_center"], source), (similarity["target_center"], target)):
-        assert is_point_list([center], 1) and all(type(c) is float for c in center)
-        np.testing.assert_allclose(center, points.mean(axis=0), rtol=0, atol=1e-12 * (1 + np.abs(points).max()))
-    a, b = source - source.mean(axis=0), target - target.mean(axis=0)
-    radius_a, radius_b = np.sqrt((a ** 2).sum()), np.sqrt((b ** 2).sum())
-    if radius_a > 0 and radius_b > 0:
-        assert similarity["scale"] == pytest.approx(radius_b / radius_a, rel=1e-9)
-        fitted = math.degrees(math.atan2((a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]).sum(), (a * b).sum()))
-        # The rotation taken: the short way in (-180, 180], counter-clockwise
-        # in [0, 360) or clockwise in (-360, 0], plus the whole turns.
-        low = {"short": -180, "ccw": 0, "cw": -360}[rotation] + 360 * turns
-        angle = similarity["angle_degrees"]
-        assert low - 1e-9 <= angle <= low + 360 + 1e-9, (angle, rotation, turns)
-        assert math.remainder(angle - fitted, 360) == pytest.approx(0, abs=1e-7)
-    guide = rigid["guide_frames"]
-    assert set(guide) == {"exact", "blended", "barycentric"}
-    assert all(type(v) is int and v >= 0 for v in guide.values())
-    # Every interior frame is made one way or another.
-    assert sum(guide.values()) == frames - 2
-    # The rigid morph makes no LU factorization of [8]'s kind; the time it
-    # spends setting up its own systems, if it reports any, is part of the
-    # morph's.
-    milliseconds = stats["milliseconds"]
-    assert stats["factorizations"] == 0
-    assert 0 <= milliseconds["factorize"] <= milliseconds["morph"]
-    return rigid
+    """stats["rigid"] of a rigid morph (docs/CLI.md), as rigid_stats.py checks it."""
+    return check_rigid_section(stats, source_vertices, target_vertices, frames, rotation, turns, easing)
 
 
 def check_morph_document(document, source_path, target_path, frames, method="rigid", **rigid_options):
