@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <optional>
 #include <utility>
 
@@ -15,11 +16,6 @@ namespace {
 
 double milliseconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-// "--method linear" or "method='linear'", as the caller would have written it.
-std::string describe_linear(OptionSpelling spelling) {
-  return spelling == OptionSpelling::CommandLine ? "--method linear" : "method='linear'";
 }
 
 // The target mapped back by the similarity at t = 1, as a stick figure, or
@@ -194,38 +190,34 @@ std::string morph_method_name(MorphMethod method) {
 
 void check_morph_options(const MorphStickFiguresOptions& options) {
   check_frames(options.frames, options.spelling);
+  // "--method linear" or "method='linear'", as the caller would have written it.
+  const std::string method_text = options.spelling == OptionSpelling::CommandLine
+                                      ? "--method " + morph_method_name(options.method)
+                                      : "method='" + morph_method_name(options.method) + "'";
+  // Options given that this method would ignore: the first one is refused.
+  auto refuse_given = [&](std::initializer_list<std::pair<Option, bool>> options_given, const char* why) {
+    for (const auto& [option, given] : options_given)
+      if (given)
+        throw InvalidArgumentError(describe_option(option, options.spelling) + " has no effect with " + method_text +
+                                   " (" + why + ")");
+  };
   if (options.method == MorphMethod::Linear) {
     // The order of the CLI's historical checks, so that the first refused
     // option named is the same as before.
-    const std::pair<Option, bool> unused[] = {
-        {Option::Verify, options.verify.has_value()},
-        {Option::Weights, options.weights.has_value()},
-        {Option::Steiner, options.steiner.has_value()},
-        {Option::EnclosureSides, options.enclosure_sides.has_value()},
-    };
-    for (const auto& [option, given] : unused)
-      if (given)
-        throw InvalidArgumentError(describe_option(option, options.spelling) + " has no effect with " +
-                                   describe_linear(options.spelling) +
-                                   " (the straight-line morph uses no triangulation)");
+    refuse_given({{Option::Verify, options.verify.has_value()},
+                  {Option::Weights, options.weights.has_value()},
+                  {Option::Steiner, options.steiner.has_value()},
+                  {Option::EnclosureSides, options.enclosure_sides.has_value()}},
+                 "the straight-line morph uses no triangulation");
     if (options.keep_node_frames)
-      throw InvalidArgumentError("node frames do not exist with " + describe_linear(options.spelling) +
+      throw InvalidArgumentError("node frames do not exist with " + method_text +
                                  " (the straight-line morph uses no triangulation)");
   }
-  if (options.method != MorphMethod::Rigid) {
-    const std::pair<Option, bool> rigid_only[] = {
-        {Option::Rotation, options.rotation.has_value()},
-        {Option::Turns, options.turns.has_value()},
-        {Option::Easing, options.easing.has_value()},
-    };
-    for (const auto& [option, given] : rigid_only)
-      if (given)
-        throw InvalidArgumentError(describe_option(option, options.spelling) + " has no effect with " +
-                                   (options.spelling == OptionSpelling::CommandLine
-                                        ? "--method " + morph_method_name(options.method)
-                                        : "method='" + morph_method_name(options.method) + "'") +
-                                   " (only the rigid method factors out a rotation and follows a guide)");
-  }
+  if (options.method != MorphMethod::Rigid)
+    refuse_given({{Option::Rotation, options.rotation.has_value()},
+                  {Option::Turns, options.turns.has_value()},
+                  {Option::Easing, options.easing.has_value()}},
+                 "only the rigid method factors out a rotation and follows a guide");
   if (options.enclosure_sides) check_enclosure_sides(*options.enclosure_sides, options.spelling);
   if (options.turns) check_turns(*options.turns, options.spelling);
 }
