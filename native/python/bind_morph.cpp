@@ -425,7 +425,10 @@ target_edges=None) does once what morph() does before its frames: fits
 the similarity, triangulates the pair inside an enclosure that holds the
 rigid guide's way, and samples the guide. solve(t) then gives the figure at
 any animation time t in [0, 1], in any order, checked exactly as morph()'s
-frames are. Solving morph()'s times k/(N-1) gives morph()'s frames.
+frames are. Each solve iterates from the last one, so the same t can differ
+in the ninth digit or so depending on the times solved before it; solving
+morph()'s times k/(N-1) in order from a new RigidMorphSolver gives morph()'s
+frames bit for bit.
 
 Arguments as for morph() (method is always "rigid").
 

@@ -74,6 +74,9 @@ struct GuidedMorphStats {
   double solve_ms = 0;         ///< the blended solves (step 4) and fallbacks
   double verify_ms = 0;        ///< exact checks
   int refined_frames = 0;
+  /// Numeric LU factorizations of the Steiner and the blended systems, set-up
+  /// included (the rest are iterations on the latest one, as MorphSolver's).
+  int factorizations = 0;
 };
 
 /// The stateful rigid morph: constructed once, then frame(t) for any

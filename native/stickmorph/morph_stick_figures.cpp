@@ -159,6 +159,7 @@ void morph_rigidly(const StickFigure& source, const StickFigure& target, const M
   stats.solve_ms = morphed.stats.solve_ms;
   stats.verify_ms = morphed.stats.verify_ms;
   stats.refined_frames = guided.refined_frames;
+  stats.factorizations = guided.factorizations;
   stats.guide_exact_frames = guided.exact_frames;
   stats.guide_blended_frames = guided.blended_frames;
   stats.guide_barycentric_frames = guided.barycentric_frames;

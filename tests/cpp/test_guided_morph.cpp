@@ -458,7 +458,11 @@ TEST_CASE("GuidedMorph scrubs: any time, any order, exact ends", "[guided_morph]
   const GuidedFrame a = morph.frame(0.7, -1, true, "scrub: ");
   const GuidedFrame b = morph.frame(0.2, -1, true, "scrub: ");
   const GuidedFrame again = morph.frame(0.7, -1, true, "scrub: ");
-  CHECK(again.positions == a.positions);
+  // The systems are solved by iterating on the latest factorization from
+  // the last solution (as MorphSolver does), so a time solved again after
+  // another one agrees to the solvers' tolerance, not bit for bit.
+  const double scale = rms_radius(pair.source.vertices) + rms_radius(pair.target.vertices);
+  check_close(again.positions, a.positions, 1e-7 * scale);
   CHECK(again.fit == a.fit);
   CHECK(again.parameter == a.parameter);
   CHECK(b.parameter > 0);
@@ -472,7 +476,7 @@ TEST_CASE("GuidedMorph scrubs: any time, any order, exact ends", "[guided_morph]
                          std::vector<Vec2>(f->positions.begin(), f->positions.begin() + tri.figure_vertices)));
   }
   // Without the check the same frame comes out.
-  CHECK(morph.frame(0.7, -1, false, "scrub: ").positions == a.positions);
+  check_close(morph.frame(0.7, -1, false, "scrub: ").positions, a.positions, 1e-7 * scale);
 
   CHECK_THROWS_AS(morph.frame(-0.1, -1, true, "scrub: "), InvalidArgumentError);
   CHECK_THROWS_AS(morph.frame(1.5, 3, true, "scrub: "), InvalidArgumentError);

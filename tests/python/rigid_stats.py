@@ -38,9 +38,9 @@ def check_rigid_section(stats, source_vertices, target_vertices, frames, rotatio
     assert all(type(v) is int and v >= 0 for v in guide.values())
     # Every interior frame is made one way or another.
     assert sum(guide.values()) == frames - 2
-    # The rigid morph makes no LU factorization of [8]'s kind; the time it spends setting up its
-    # own systems is reported as "factorize", part of the morph's.
+    # The rigid morph's factorizations are those of its own systems (set-up included); its set-up
+    # time is reported as "factorize", part of the morph's.
     milliseconds = stats["milliseconds"]
-    assert stats["factorizations"] == 0
+    assert type(stats["factorizations"]) is int and stats["factorizations"] >= 0
     assert 0 <= milliseconds["factorize"] <= milliseconds["morph"]
     return rigid
