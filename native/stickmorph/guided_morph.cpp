@@ -31,6 +31,16 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 constexpr int kTrustSamples = 16;
 constexpr double kTrustRamp = 0.2;
 
+// Sample j of kTrustSamples + 1 along the guide's motion: denser near the
+// ends (Chebyshev spacing), where a morph that leaves the guide has to come
+// back to the exact source and target and may do it quickly; the timing
+// by the morph's own motion is piecewise linear between samples.
+double sample_time(int j) {
+  if (j <= 0) return 0;
+  if (j >= kTrustSamples) return 1;
+  return 0.5 - 0.5 * std::cos(3.14159265358979323846 * j / kTrustSamples);
+}
+
 double smoothstep01(double x) {
   x = std::clamp(x, 0.0, 1.0);
   return x * x * (3 - 2 * x);
@@ -310,7 +320,7 @@ struct GuidedMorph::State {
     trust_samples.assign(kTrustSamples + 1, std::vector<float>(n, 1.0f));
     std::vector<std::vector<Vec2>> guide_frames(kTrustSamples + 1);
     for (int j = 0; j <= kTrustSamples; ++j) {
-      sample_u[j] = guide.parameter_at(double(j) / kTrustSamples, Easing::None);
+      sample_u[j] = guide.parameter_at(sample_time(j), Easing::None);
       if (j == 0 || j == kTrustSamples) continue;  // the inputs themselves
       blend_weights(sample_u[j]);
       guide_frames[j] = guide_frame(sample_u[j]);
@@ -364,7 +374,7 @@ struct GuidedMorph::State {
     const double lo = own_motion[j - 1], hi = own_motion[j];
     const double f = hi > lo ? std::clamp((goal - lo) / (hi - lo), 0.0, 1.0) : 0.0;
     // Between samples, even along the guide.
-    return guide.parameter_at((j - 1 + f) / kTrustSamples, Easing::None);
+    return guide.parameter_at((1 - f) * sample_time(j - 1) + f * sample_time(j), Easing::None);
   }
 
   // Steps 3-4: the guide frame when every figure vertex trusts it fully,
