@@ -257,7 +257,8 @@ struct GuidedMorph::State {
     const std::vector<Vec2> figure = similarity.unapply(u, guide.at(u));
     std::vector<Vec2> g = tri.source;  // the enclosure is fixed
     std::copy(figure.begin(), figure.end(), g.begin());
-    // Warm values for the Steiner nodes are not needed: a direct solve.
+    // The Steiner nodes' values in g are not a warm start: the system
+    // iterates from its own last solution.
     if (!steiner_system.solve([&](int v) -> const std::vector<double>& { return wt[v]; }, g))
       throw VerificationError("the rigid morph's Steiner system at u = " + format_double(u) + " is singular");
     return g;
