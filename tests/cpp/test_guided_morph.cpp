@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "figures.h"
+#include "option_checks.h"
 #include "motion_helpers.h"
 #include "stickmorph/errors.h"
 #include "stickmorph/frame_verification.h"
@@ -112,15 +113,6 @@ void check_rigid_result(const StickFigure& source, const StickFigure& target, co
   CHECK(s.triangles == int(tri.triangles.size()));
 }
 
-// The refusal check_morph_options gives, or "".
-std::string refusal(const MorphStickFiguresOptions& options) {
-  try {
-    check_morph_options(options);
-  } catch (const InvalidArgumentError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 // The compatible triangulation and guide morph_stick_figures builds for
 // method Rigid, built by hand from the public pieces.

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "option_checks.h"
 #include "stickmorph/argument_limits.h"
 #include "stickmorph/compatibility.h"
 #include "stickmorph/errors.h"
@@ -20,6 +21,7 @@
 #include "stickmorph/morph_stick_figures.h"
 
 using namespace stickmorph;
+using namespace stickmorph::test;
 
 namespace {
 
@@ -32,15 +34,6 @@ Pair read_pair(const std::string& folder, const std::string& name) {
   return {read_figure_file(stem + ".source.json"), read_figure_file(stem + ".target.json")};
 }
 
-// The message of the InvalidArgumentError `options` is refused with.
-std::string refusal(const MorphStickFiguresOptions& options) {
-  try {
-    check_morph_options(options);
-  } catch (const InvalidArgumentError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 }  // namespace
 

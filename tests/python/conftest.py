@@ -3,6 +3,7 @@
 The build directory comes from STICKMORPH_BUILD_DIR (default: <repo>/build),
 the layout that `cmake -S . -B build` produces (../shared/FORMAT.md).
 """
+import importlib.util
 import os
 import pathlib
 import sys
@@ -30,3 +31,11 @@ def cli():
 def data_dir():
     """tests/data: golden figures and malformed inputs."""
     return DATA
+
+
+def load_script(name):
+    """scripts/NAME.py imported as a module, for the tests of the benchmark scripts."""
+    spec = importlib.util.spec_from_file_location(name, REPO / "scripts" / f"{name}.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module

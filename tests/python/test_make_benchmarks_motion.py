@@ -3,25 +3,19 @@ BENCHMARKS.md from scripts/motion_quality.py's motion.json (issue 12, item 6): o
 hand-made motion.json whose numbers are known, and once through the script's command line
 with a minimal data folder. Needs only Debian's python3 with matplotlib, no build.
 """
-import importlib.util
 import json
 import pathlib
 import subprocess
 
 import pytest
 
+from conftest import load_script
+
 REPO = pathlib.Path(__file__).resolve().parents[2]
 TIMEOUT_SECONDS = 300
 
 
-def _load(name):
-    spec = importlib.util.spec_from_file_location(name, REPO / "scripts" / f"{name}.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-mb = _load("make_benchmarks")
+mb = load_script("make_benchmarks")
 METHODS = ["rigid", "barycentric", "linear", "arap"]
 
 

@@ -4,7 +4,6 @@ of both scripts through the CLI on tiny pairs.
 
 Every subprocess has a timeout, so a hang fails the test instead of stalling the suite.
 """
-import importlib.util
 import json
 import math
 import pathlib
@@ -14,18 +13,13 @@ import sys
 import numpy as np
 import pytest
 
+from conftest import load_script
+
 REPO = pathlib.Path(__file__).resolve().parents[2]
 TIMEOUT_SECONDS = 300
 
 
-def _load(name):
-    spec = importlib.util.spec_from_file_location(name, REPO / "scripts" / f"{name}.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-mq = _load("motion_quality")
+mq = load_script("motion_quality")
 
 # an asymmetric little tree: a T with a longer tail, and a square with a spike (has a cycle)
 TREE = np.array([[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [1.0, -2.0], [1.0, 1.0]])
