@@ -247,6 +247,12 @@ struct GuidedMorph::State {
   std::optional<MorphSolver> fallback;  // [8] itself, made on first need
   GuidedMorphStats stats;
 
+  // stats.factorizations after solves: both systems' and the fallback's.
+  void count_factorizations() {
+    stats.factorizations = steiner_system.factorizations() + full_system.factorizations() +
+                           (fallback ? fallback->stats().factorizations : 0);
+  }
+
   void blend_weights(double u) {
     for (int v : topo.interior_nodes)
       for (std::size_t j = 0; j < wt[v].size(); ++j) wt[v][j] = (1 - u) * w0[v][j] + u * w1[v][j];
@@ -449,6 +455,7 @@ GuidedMorph::GuidedMorph(const FigureTriangulation& normalised, const StickFigur
   auto start = Clock::now();
   s.sample_guide();
   s.stats.guide_ms += ms_since(start);
+  s.count_factorizations();
   // The triangulation in output space (section 6's rotated enclosure).
   s.output = tri;
   s.output.target = similarity.apply(1.0, tri.target);
@@ -464,10 +471,7 @@ GuidedMorph& GuidedMorph::operator=(GuidedMorph&&) noexcept = default;
 
 const FigureTriangulation& GuidedMorph::triangulation() const { return state_->output; }
 const SimilarityMotion& GuidedMorph::similarity() const { return state_->similarity; }
-const GuidedMorphStats& GuidedMorph::stats() const {
-  state_->stats.factorizations = state_->steiner_system.factorizations() + state_->full_system.factorizations();
-  return state_->stats;
-}
+const GuidedMorphStats& GuidedMorph::stats() const { return state_->stats; }
 
 
 GuidedFrame GuidedMorph::frame(double t, int frame, bool verify, const std::string& context) {
@@ -503,6 +507,7 @@ GuidedFrame GuidedMorph::frame(double t, int frame, bool verify, const std::stri
   bool exact = false;
   result.positions = s.similarity.apply(u, s.guided_frame(g, u, exact));
   s.stats.solve_ms += ms_since(start);
+  s.count_factorizations();
   result.fit = exact ? GuideFit::Exact : GuideFit::Blended;
   if (!verify) return result;
   std::string defect = defect_of(result.positions);
@@ -516,6 +521,7 @@ GuidedFrame GuidedMorph::frame(double t, int frame, bool verify, const std::stri
   s.stats.verify_ms += plain.verify_ms;
   result.verify_ms += plain.verify_ms;
   result.refined = plain.refined;
+  s.count_factorizations();
   result.positions = s.similarity.apply(u, plain.positions);
   result.fit = GuideFit::Barycentric;
   defect = defect_of(result.positions);
