@@ -23,6 +23,7 @@
 #include "stickmorph/argument_limits.h"
 #include "stickmorph/compatibility.h"
 #include "stickmorph/errors.h"
+#include "stickmorph/figure_correspondence.h"
 #include "stickmorph/figure_io.h"
 #include "stickmorph/figure_triangulation.h"
 #include "stickmorph/json.h"
@@ -49,6 +50,7 @@ struct OptionSpec {
   std::string_view short_name;  ///< "-o", or empty
   std::string_view value_name;  ///< "N" if the option takes a value, empty for a flag
   std::string help;             ///< built at start-up where it quotes the engine's limits
+  bool repeatable = false;      ///< may be given more than once (--pin); all values kept in order
 };
 
 /// A command's arguments after parsing: positionals in order, options by
@@ -56,6 +58,8 @@ struct OptionSpec {
 struct ParsedArguments {
   std::vector<std::string> positional;
   std::map<std::string, std::string, std::less<>> options;
+  /// Repeatable options: every value, in command-line order.
+  std::map<std::string, std::vector<std::string>, std::less<>> repeated;
 };
 
 struct CommandSpec {
@@ -97,9 +101,33 @@ void write_stdout(const std::string& text) {
 
 // -- commands ---------------------------------------------------------------
 
+// --correspond and --pin, as the engine takes them. Pins are parsed before
+// any file is read; whether they exist in the figures is the matching's to say.
+struct Matching {
+  CorrespondenceMode mode = CorrespondenceMode::ByIndex;
+  std::vector<VertexPin> pins;
+};
+
+Matching matching_options(const ParsedArguments& arguments, std::string_view command);
+
 int run_check(const ParsedArguments& arguments) {
+  const Matching matching = matching_options(arguments, "check");
   const StickFigure source = read_figure_file(arguments.positional[0]);
   const StickFigure target = read_figure_file(arguments.positional[1]);
+  if (matching.mode == CorrespondenceMode::Auto) {
+    // Matchable is compatible: the matched pair is compatible by
+    // construction (and checked). Bad pins are still exit 2.
+    CorrespondenceOptions options;
+    options.pins = matching.pins;
+    try {
+      correspond_figures(source, target, options);
+    } catch (const IncompatibleFiguresError& error) {
+      write_stdout(std::string("incompatible: ") + error.what() + "\n");
+      return kExitIncompatible;
+    }
+    write_stdout("compatible\n");
+    return kExitSuccess;
+  }
   const CompatibilityReport report = check_compatibility(source, target);
   if (report.compatible()) {
     write_stdout("compatible\n");
@@ -123,6 +151,19 @@ const std::string& required_option(const ParsedArguments& arguments, std::string
     throw InvalidArgumentError(std::string(command) + ": missing option " + std::string(name) + " (see 'stickmorph " +
                                std::string(command) + " --help')");
   return *value;
+}
+
+Matching matching_options(const ParsedArguments& arguments, std::string_view command) {
+  Matching matching;
+  if (const std::string* name = option_value(arguments, "--correspond"))
+    matching.mode = parse_correspondence_mode(*name);
+  if (const auto pins = arguments.repeated.find("--pin"); pins != arguments.repeated.end())
+    for (const std::string& text : pins->second) matching.pins.push_back(parse_vertex_pin(text));
+  if (!matching.pins.empty() && matching.mode != CorrespondenceMode::Auto)
+    throw InvalidArgumentError(std::string(command) +
+                               ": option --pin needs --correspond auto (with the index correspondence every "
+                               "vertex is already paired)");
+  return matching;
 }
 
 // A whole number option, e.g. --frames; its range is the engine's to check
@@ -211,7 +252,12 @@ std::string morph_document(const StickFigure& source, const MorphStickFiguresRes
   }
   how.triangulate_ms = stats.triangulate_ms;
   how.morph_ms = stats.morph_ms;
-  return morph_file_json(source, result.times, result.frames, how);
+  if (result.correspondence) {
+    how.correspondence = &*result.correspondence;
+    how.correspond_ms = stats.correspond_ms;
+  }
+  return morph_file_json(result.correspondence ? result.correspondence->source : source, result.times,
+                         result.frames, how);
 }
 
 int run_morph(const ParsedArguments& arguments) {
@@ -247,6 +293,9 @@ int run_morph(const ParsedArguments& arguments) {
     options.rotation = parse_rotation_direction(*name);
   options.turns = integer_option(arguments, "--turns");
   if (const std::string* name = option_value(arguments, "--easing")) options.easing = parse_easing(*name);
+  const Matching matching = matching_options(arguments, "morph");
+  options.correspond = matching.mode;
+  options.pins = matching.pins;
   // The triangulation drawn under the filmstrip needs every node's position.
   options.keep_node_frames = overlay;
   check_morph_options(options);
@@ -257,18 +306,35 @@ int run_morph(const ParsedArguments& arguments) {
 
   const MorphStickFiguresResult result = morph_stick_figures(source, target, options);
   std::vector<cli::OutputFile> files{{output, morph_document(source, result, options)}};
+  // The figure the frames are of: the matched one with --correspond auto.
+  const StickFigure& drawn = result.correspondence ? result.correspondence->source : source;
   if (svg && compare_linear) {
     MorphStickFiguresOptions linear;
     linear.method = MorphMethod::Linear;
     linear.frames = options.frames;
-    const MorphStickFiguresResult straight = morph_stick_figures(source, target, linear);
-    files.push_back({*svg, comparison_filmstrip_svg(source, result.frames, straight.frames, result.times, 7,
+    const MorphStickFiguresResult straight =
+        result.correspondence ? morph_stick_figures(result.correspondence->source, result.correspondence->target, linear)
+                              : morph_stick_figures(source, target, linear);
+    files.push_back({*svg, comparison_filmstrip_svg(drawn, result.frames, straight.frames, result.times, 7,
                                                     straight.stats.invalid_frames, title)});
   } else if (svg) {
-    files.push_back({*svg, filmstrip_svg(source, overlay ? result.node_frames : result.frames, result.times, 7,
+    files.push_back({*svg, filmstrip_svg(drawn, overlay ? result.node_frames : result.frames, result.times, 7,
                                          overlay ? &*result.triangulation : nullptr, title)});
   }
   cli::write_files_atomically(files);
+  return kExitSuccess;
+}
+
+int run_correspond(const ParsedArguments& arguments) {
+  const std::string& output = required_option(arguments, "correspond", "--output");
+  cli::check_output_path("--output", output);
+  Matching matching = matching_options(arguments, "correspond");
+  const StickFigure source = read_figure_file(arguments.positional[0]);
+  const StickFigure target = read_figure_file(arguments.positional[1]);
+  CorrespondenceOptions options;
+  options.pins = std::move(matching.pins);
+  const FigureCorrespondence correspondence = correspond_figures(source, target, options);
+  cli::write_files_atomically({{output, correspondence_file_json(correspondence)}});
   return kExitSuccess;
 }
 
@@ -292,17 +358,37 @@ std::string turns_help() {
          " to " + std::to_string(kMaxExtraTurns) + ")";
 }
 
+constexpr const char* kCorrespondHelp =
+    "index (default: vertex i becomes vertex i) or auto (match figures drawn separately; dummy vertices "
+    "where a vertex has no partner)";
+constexpr const char* kPinHelp =
+    "with --correspond auto: source vertex S must become target vertex T (repeatable)";
+
 const std::vector<CommandSpec>& commands() {
   static const std::vector<CommandSpec> table = {
       {"check",
        {"SOURCE.json", "TARGET.json"},
-       {},
+       {{"--correspond", "", "MODE", kCorrespondHelp},
+        {"--pin", "", "S:T", kPinHelp, true}},
        "decide whether two stick figures are compatible",
        "Decides whether the two figures, whose vertices correspond by index, are\n"
        "compatible (same cyclic order of edges around every vertex and the same\n"
        "exterior sequence; Surazhsky & Gotsman 2001, section 2.1). Prints\n"
-       "\"compatible\" (exit 0) or \"incompatible: <reason naming vertices>\" (exit 1).",
+       "\"compatible\" (exit 0) or \"incompatible: <reason naming vertices>\" (exit 1).\n"
+       "With --correspond auto: whether the figures can be matched (see correspond).",
        &run_check},
+      {"correspond",
+       {"SOURCE.json", "TARGET.json"},
+       {{"--output", "-o", "OUT.json", "where to write the matched figures (required)"},
+        {"--pin", "", "S:T", kPinHelp, true}},
+       "match two stick figures drawn separately",
+       "Matches two figures that need not correspond by index (other vertex counts,\n"
+       "numbering or subdivision): their junctions and ends as plane maps, their\n"
+       "strokes by arc length, with dummy vertices where a vertex has no partner\n"
+       "(Surazhsky & Gotsman 2001, section 6). Writes the matched figure on the\n"
+       "source and on the target drawing and the \"correspondence\" of morph\n"
+       "--correspond auto.",
+       &run_correspond},
       {"triangulate",
        {"SOURCE.json", "TARGET.json"},
        {{"--output", "-o", "OUT.json", "where to write the triangulation object (required)"},
@@ -330,6 +416,8 @@ const std::vector<CommandSpec>& commands() {
         {"--rotation", "", "DIR", "rigid: which way the figure turns as a whole: short (default), ccw or cw"},
         {"--turns", "", "K", turns_help()},
         {"--easing", "", "NAME", "rigid: none (default: even speed) or in-out (slow in and out)"},
+        {"--correspond", "", "MODE", kCorrespondHelp},
+        {"--pin", "", "S:T", kPinHelp, true},
         {"--no-verify", "", "", "skip the exact check of every frame"},
         {"--svg", "", "FILE", "also draw a filmstrip of about seven frames"},
         {"--svg-triangulation", "", "", "draw the triangulation under the filmstrip's figures"},
@@ -491,6 +579,10 @@ bool parse_arguments(const CommandSpec& command, const std::vector<std::string>&
   }
   for (std::size_t k = 0; k < command.options.size(); ++k) {
     const OptionSpec& option = command.options[k];
+    if (option.repeatable) {
+      if (handles[k]->count() > 0) parsed.repeated[std::string(option.name)] = values[k];
+      continue;
+    }
     if (handles[k]->count() > 1) fail_usage(command, "option " + single_quoted(option.name) + " given twice");
     if (handles[k]->count() == 1)
       parsed.options[std::string(option.name)] = option.value_name.empty() ? std::string() : values[k].front();

@@ -16,7 +16,105 @@ void write_points(JsonWriter& out, const std::vector<Vec2>& points) {
   out.end_array();
 }
 
+void write_places(JsonWriter& out, const std::vector<MatchedPlace>& places, int MatchedPlace::*field) {
+  out.begin_array();
+  for (const MatchedPlace& place : places) out.value(place.*field);
+  out.end_array();
+}
+
+void write_fractions(JsonWriter& out, const std::vector<MatchedPlace>& places) {
+  out.begin_array();
+  for (const MatchedPlace& place : places) out.value(place.fraction);
+  out.end_array();
+}
+
+void write_figure_object(JsonWriter& out, const StickFigure& figure) {
+  out.begin_object();
+  out.key("name");
+  out.value(figure.name);
+  out.key("vertices");
+  write_points(out, figure.vertices);
+  out.key("edges");
+  out.begin_array();
+  for (const Edge& e : figure.edges) {
+    out.begin_array();
+    out.value(e[0]);
+    out.value(e[1]);
+    out.end_array();
+  }
+  out.end_array();
+  out.end_object();
+}
+
+int dummy_count(const std::vector<MatchedPlace>& places) {
+  int count = 0;
+  for (const MatchedPlace& place : places) count += place.vertex < 0;
+  return count;
+}
+
+// How the matching was found (stats.correspondence).
+void write_matching_stats(JsonWriter& out, const FigureCorrespondence& c) {
+  out.begin_object();
+  out.key("matched_vertices");
+  out.value(int(c.source.vertices.size()));
+  out.key("source_dummies");
+  out.value(dummy_count(c.source_places));
+  out.key("target_dummies");
+  out.value(dummy_count(c.target_places));
+  out.key("skeleton_nodes");
+  out.value(c.skeleton_nodes);
+  out.key("skeleton_chains");
+  out.value(c.skeleton_chains);
+  out.key("candidates");
+  out.value(c.candidates);
+  out.key("residual");
+  out.value(c.residual);
+  out.key("rotation_degrees");
+  out.value(c.rotation_degrees);
+  out.end_object();
+}
+
 }  // namespace
+
+void write_correspondence(JsonWriter& out, const FigureCorrespondence& c) {
+  out.begin_object();
+  out.key("source");
+  write_places(out, c.source_places, &MatchedPlace::vertex);
+  out.key("target");
+  write_places(out, c.target_places, &MatchedPlace::vertex);
+  out.key("source_edge");
+  write_places(out, c.source_places, &MatchedPlace::edge);
+  out.key("source_fraction");
+  write_fractions(out, c.source_places);
+  out.key("target_edge");
+  write_places(out, c.target_places, &MatchedPlace::edge);
+  out.key("target_fraction");
+  write_fractions(out, c.target_places);
+  out.end_object();
+}
+
+std::string correspondence_file_json(const FigureCorrespondence& c) {
+  JsonWriter out(true);
+  out.begin_object();
+  out.key("source");
+  write_figure_object(out, c.source);
+  out.key("target");
+  write_figure_object(out, c.target);
+  out.key("correspondence");
+  write_correspondence(out, c);
+  out.key("stats");
+  out.begin_object();
+  out.key("correspondence");
+  write_matching_stats(out, c);
+  out.key("milliseconds");
+  out.begin_object();
+  out.key("correspond");
+  out.value(c.milliseconds);
+  out.end_object();
+  out.end_object();
+  out.end_object();
+  return out.finish();
+}
 
 void write_triangulation(JsonWriter& out, const FigureTriangulation& tri) {
   out.begin_object();
@@ -76,6 +174,10 @@ std::string morph_file_json(const StickFigure& source, const std::vector<double>
     out.end_array();
   }
   out.end_array();
+  if (how.correspondence) {
+    out.key("correspondence");
+    write_correspondence(out, *how.correspondence);
+  }
   out.key("triangulation");
   if (triangulation) write_triangulation(out, *triangulation);
   else out.null();
@@ -98,6 +200,10 @@ std::string morph_file_json(const StickFigure& source, const std::vector<double>
     out.value(how.stats->solve_ms);
     out.key("verify");
     out.value(how.stats->verify_ms);
+  }
+  if (how.correspondence) {
+    out.key("correspond");
+    out.value(how.correspond_ms);
   }
   out.end_object();
   out.key("method");
@@ -151,6 +257,10 @@ std::string morph_file_json(const StickFigure& source, const std::vector<double>
     out.value(rigid.barycentric_frames);
     out.end_object();
     out.end_object();
+  }
+  if (how.correspondence) {
+    out.key("correspondence");
+    write_matching_stats(out, *how.correspondence);
   }
   if (how.invalid_frames) {
     out.key("invalid_frames");

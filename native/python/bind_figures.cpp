@@ -12,6 +12,7 @@
 #include "stickmorph/compatibility.h"
 #include "stickmorph/decomposition.h"
 #include "stickmorph/errors.h"
+#include "stickmorph/figure_correspondence.h"
 #include "stickmorph/figure_io.h"
 
 namespace stickmorph::python {
@@ -230,6 +231,79 @@ Raises:
     which).
   InvalidArgumentError: an array of the wrong shape or type.)doc");
 
+  m.def(
+      "correspond",
+      [](const py::object& source_xy, const py::object& target_xy, const py::object& edges,
+         const py::object& target_edges, const py::object& pins) {
+        sm::CorrespondenceOptions options;
+        options.pins = to_pins(pins);
+        const auto figures = make_figure_pair(source_xy, target_xy, edges, target_edges, "source_xy", "target_xy");
+        sm::FigureCorrespondence c;
+        {
+          py::gil_scoped_release release;
+          c = sm::correspond_figures(figures.first, figures.second, options);
+        }
+        py::dict stats = matching_stats_dict(c);
+        py::dict milliseconds;
+        milliseconds["correspond"] = c.milliseconds;
+        stats["milliseconds"] = milliseconds;
+        py::dict result;
+        result["source_xy"] = to_point_array(c.source.vertices);
+        result["target_xy"] = to_point_array(c.target.vertices);
+        result["edges"] = to_edge_array(c.source.edges);
+        result["correspondence"] = correspondence_dict(c);
+        result["stats"] = stats;
+        return result;
+      },
+      py::arg("source_xy"), py::arg("target_xy"), py::arg("edges"), py::kw_only(),
+      py::arg("target_edges") = py::none(), py::arg("pins") = py::none(),
+      R"doc(Matches two figures drawn separately (paper, section 6: dummy vertices).
+
+The figures need not correspond by index: they may differ in vertex count,
+numbering, edge order and in how their strokes are subdivided. Their
+skeletons (the vertices of degree other than 2 and the strokes between
+them) are matched as plane maps, keeping the counter-clockwise order of the
+strokes around every junction and the outside; among the matchings the one
+closest to a similarity wins (near ties: the smallest rotation). Strokes
+are then matched by arc length: every vertex of either figure is kept, and
+one with no partner gets a dummy vertex on the other figure's edge. The
+result is a compatible pair on m vertices, ready for morph(),
+MorphSolver or RigidMorphSolver.
+
+Args:
+  source_xy: #Vs by 2 float64 array-like, source coordinates.
+  target_xy: #Vt by 2 float64 array-like, target coordinates.
+  edges: #Es by 2 integer array-like, the source's edges (and the target's
+    unless target_edges is given).
+  target_edges: #Et by 2 integer array-like, the target's edges.
+  pins: optional #P by 2 integer array-like of (source vertex, target
+    vertex) pairs that must match: both junctions or ends of one degree, or
+    both inside a stroke.
+
+Returns:
+  dict with
+    "source_xy"      (m, 2) float64 ndarray: the matched figure on the source
+                     drawing; rows 0..#Vs-1 are source_xy itself, then come
+                     the dummies on source edges, in target-vertex order
+    "target_xy"      (m, 2) float64 ndarray: the same vertices on the target
+    "edges"          (#E, 2) int64 ndarray: the matched figure's edges
+    "correspondence" dict of (m,) ndarrays, as morph()'s: "source",
+                     "target", "source_edge", "source_fraction",
+                     "target_edge", "target_fraction"
+    "stats"          dict: "matched_vertices", "source_dummies",
+                     "target_dummies", "skeleton_nodes", "skeleton_chains",
+                     "candidates" (matchings compared), "residual" (of the
+                     similarity fit, 0 perfect), "rotation_degrees" and
+                     "milliseconds" ({"correspond": float})
+
+Raises:
+  InvalidFigureError: the source or the target is invalid.
+  InvalidArgumentError: a pin names a missing vertex, pins one twice or
+    joins vertices of different kinds; an array of the wrong shape.
+  IncompatibleFiguresError: the figures cannot be matched; kind
+    "topology_differs" (loops, ends, junction degrees or their arrangement
+    differ; the message says which), "mirror_image", "exterior_differs" or
+    "pins_unsatisfiable".)doc");
 }
 
 }  // namespace stickmorph::python

@@ -34,7 +34,8 @@ sm::MorphStickFiguresOptions to_morph_options(const py::object& frames, const py
                                               const py::object& weights, const py::object& enclosure_sides,
                                               const py::object& method, const py::object& verify,
                                               const py::object& rotation, const py::object& turns,
-                                              const py::object& easing) {
+                                              const py::object& easing, const py::object& correspond = py::none(),
+                                              const py::object& pins = py::none()) {
   sm::MorphStickFiguresOptions options;
   options.spelling = kKeyword;
   // Here rather than only in the engine so that the message quotes a Python
@@ -58,6 +59,8 @@ sm::MorphStickFiguresOptions to_morph_options(const py::object& frames, const py
     if (options.method == sm::MorphMethod::Rigid) sm::check_turns(*options.turns, kKeyword, py::str(turns));
   }
   if (!easing.is_none()) options.easing = sm::parse_easing(to_name(easing, "easing"));
+  if (!correspond.is_none()) options.correspond = sm::parse_correspondence_mode(to_name(correspond, "correspond"));
+  options.pins = to_pins(pins);
   sm::check_morph_options(options);
   return options;
 }
@@ -114,6 +117,10 @@ py::dict morph_dict(const sm::MorphStickFiguresResult& result, const sm::MorphSt
   statistics["factorizations"] = stats.factorizations;
   if (linear) statistics["invalid_frames"] = to_list(stats.invalid_frames);
   if (method == sm::MorphMethod::Rigid) statistics["rigid"] = rigid_dict(stats, options);
+  if (result.correspondence) {
+    milliseconds["correspond"] = stats.correspond_ms;
+    statistics["correspondence"] = matching_stats_dict(*result.correspondence);
+  }
   py::dict dict;
   dict["times"] = py::array_t<double>(static_cast<py::ssize_t>(result.times.size()), result.times.data());
   dict["frames"] = frames_array(result.frames, n);
@@ -122,6 +129,10 @@ py::dict morph_dict(const sm::MorphStickFiguresResult& result, const sm::MorphSt
   else
     dict["triangulation"] = py::none();
   dict["stats"] = statistics;
+  if (result.correspondence) {
+    dict["edges"] = to_edge_array(result.correspondence->source.edges);
+    dict["correspondence"] = correspondence_dict(*result.correspondence);
+  }
   return dict;
 }
 
@@ -504,10 +515,10 @@ Raises:
          const py::object& frames, const py::object& steiner, const py::object& weights,
          const py::object& enclosure_sides, const py::object& method, const py::object& verify,
          const py::object& target_edges, const py::object& rotation, const py::object& turns,
-         const py::object& easing) {
+         const py::object& easing, const py::object& correspond, const py::object& pins) {
         // Arguments first, figures second, as the CLI does.
-        const sm::MorphStickFiguresOptions options =
-            to_morph_options(frames, steiner, weights, enclosure_sides, method, verify, rotation, turns, easing);
+        const sm::MorphStickFiguresOptions options = to_morph_options(
+            frames, steiner, weights, enclosure_sides, method, verify, rotation, turns, easing, correspond, pins);
         const auto figures =
             make_figure_pair(source_xy, target_xy, edges, target_edges, "source_xy", "target_xy");
         sm::MorphStickFiguresResult result;
@@ -515,12 +526,15 @@ Raises:
           py::gil_scoped_release release;
           result = sm::morph_stick_figures(figures.first, figures.second, options);
         }
-        return morph_dict(result, options, figures.first.vertices.size());
+        const std::size_t n = result.correspondence ? result.correspondence->source.vertices.size()
+                                                    : figures.first.vertices.size();
+        return morph_dict(result, options, n);
       },
       py::arg("source_xy"), py::arg("target_xy"), py::arg("edges"), py::arg("frames") = sm::kDefaultMorphFrames,
       py::arg("steiner") = py::none(), py::arg("weights") = py::none(), py::arg("enclosure_sides") = py::none(),
       py::arg("method") = "rigid", py::arg("verify") = py::none(), py::arg("target_edges") = py::none(),
       py::arg("rotation") = py::none(), py::arg("turns") = py::none(), py::arg("easing") = py::none(),
+      py::arg("correspond") = py::none(), py::arg("pins") = py::none(),
       with_limits(R"doc(Morphs one stick figure into a compatible one (paper, Algorithm 3).
 
 The rigid method (default) morphs as rigidly as validity allows: the
@@ -564,6 +578,12 @@ Args:
   turns: extra whole turns, counter-clockwise positive, -{max_turns} to
     {max_turns} (default 0). Rigid only.
   easing: "none" (default, even speed) or "in-out". Rigid only.
+  correspond: "index" (default: vertex i of the source becomes vertex i of
+    the target) or "auto": the figures may differ in vertex count,
+    numbering, edge order and subdivision; they are matched as correspond()
+    does and the matched figure is morphed (every frame verified as usual).
+  pins: with correspond="auto", optional #P by 2 integer array-like of
+    (source vertex, target vertex) pairs the matching must respect.
 
   The options marked "barycentric only" (steiner, weights, enclosure_sides,
   verify) also apply to rigid; they default to None (not given), and giving
@@ -600,14 +620,28 @@ Returns:
                      stick figures compatible with the source). For "linear"
                      the counts, refined_frames, factorizations and the
                      triangulate and factorize times are 0, "solve" is the interpolation and "verify" the check
-                     that finds the invalid frames.
+                     that finds the invalid frames. With correspond="auto"
+                     also "correspondence" (as correspond()'s stats) and
+                     milliseconds["correspond"].
+    With correspond="auto" the frames are the matched figure's m vertices,
+    and the dict also has
+    "edges"          (#E', 2) int64 ndarray, the matched figure's edges
+    "correspondence" dict of (m,) ndarrays: "source", "target" (the vertex
+                     each matched vertex is in the source / target, -1 for
+                     a dummy), "source_edge", "target_edge" (the edge a
+                     dummy lies on, -1 for a vertex) and "source_fraction",
+                     "target_fraction" (where along that edge, from its
+                     first vertex to its second).
 
 Raises:
   InvalidFigureError: the source or the target is invalid (the message
     starts with "source: " or "target: ", and its role attribute says
     which).
   IncompatibleFiguresError: the figures are not compatible; its kind and
-    vertices attributes are those of check_compatibility's report.
+    vertices attributes are those of check_compatibility's report. With
+    correspond="auto": the figures cannot be matched, kind
+    "topology_differs", "mirror_image", "exterior_differs" or
+    "pins_unsatisfiable".
   InvalidArgumentError: frames out of range or not an integer, an unknown
     method, weights or steiner name, enclosure_sides out of range, an option
     method="linear" would ignore, or an array of the wrong shape or type.

@@ -3,6 +3,7 @@
 
 #include "stickmorph/similarity_motion.h"
 
+#include <climits>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -152,6 +153,73 @@ std::vector<std::array<std::int64_t, 2>> to_edges(py::handle object, const std::
   return edges;
 }
 
+std::vector<sm::VertexPin> to_pins(const py::object& object) {
+  if (object.is_none()) return {};
+  const py::array array = as_array(object, "pins");
+  if (!has_pair_shape(array))
+    throw sm::InvalidArgumentError("pins must have shape (#P, 2), pairs (source vertex, target vertex), got " +
+                                   shape_text(array));
+  const py::ssize_t n = array.ndim() == 2 ? array.shape(0) : 0;
+  const std::vector<std::int64_t> values =
+      to_int64_indices(array, 2 * n, "pins", [&](py::ssize_t i) { return "pins: pin " + std::to_string(i / 2); });
+  std::vector<sm::VertexPin> pins;
+  for (py::ssize_t i = 0; i < n; ++i) {
+    for (const std::int64_t v : {values[2 * i], values[2 * i + 1]})
+      if (v < INT_MIN || v > INT_MAX)
+        throw sm::InvalidArgumentError("pins: pin " + std::to_string(i) + " names vertex " + std::to_string(v) +
+                                       ", beyond any figure's vertices");
+    pins.push_back({int(values[2 * i]), int(values[2 * i + 1])});
+  }
+  return pins;
+}
+
+namespace {
+
+py::array_t<std::int64_t> place_array(const std::vector<sm::MatchedPlace>& places, int sm::MatchedPlace::*field) {
+  std::vector<std::int64_t> values;
+  for (const sm::MatchedPlace& place : places) values.push_back(place.*field);
+  return to_int64_array(values);
+}
+
+py::array_t<double> fraction_array(const std::vector<sm::MatchedPlace>& places) {
+  py::array_t<double> array(static_cast<py::ssize_t>(places.size()));
+  auto out = array.mutable_unchecked<1>();
+  for (std::size_t i = 0; i < places.size(); ++i) out(static_cast<py::ssize_t>(i)) = places[i].fraction;
+  return array;
+}
+
+int dummies(const std::vector<sm::MatchedPlace>& places) {
+  int count = 0;
+  for (const sm::MatchedPlace& place : places) count += place.vertex < 0;
+  return count;
+}
+
+}  // namespace
+
+py::dict correspondence_dict(const sm::FigureCorrespondence& c) {
+  py::dict dict;
+  dict["source"] = place_array(c.source_places, &sm::MatchedPlace::vertex);
+  dict["target"] = place_array(c.target_places, &sm::MatchedPlace::vertex);
+  dict["source_edge"] = place_array(c.source_places, &sm::MatchedPlace::edge);
+  dict["source_fraction"] = fraction_array(c.source_places);
+  dict["target_edge"] = place_array(c.target_places, &sm::MatchedPlace::edge);
+  dict["target_fraction"] = fraction_array(c.target_places);
+  return dict;
+}
+
+py::dict matching_stats_dict(const sm::FigureCorrespondence& c) {
+  py::dict dict;
+  dict["matched_vertices"] = c.source.vertices.size();
+  dict["source_dummies"] = dummies(c.source_places);
+  dict["target_dummies"] = dummies(c.target_places);
+  dict["skeleton_nodes"] = c.skeleton_nodes;
+  dict["skeleton_chains"] = c.skeleton_chains;
+  dict["candidates"] = c.candidates;
+  dict["residual"] = c.residual;
+  dict["rotation_degrees"] = c.rotation_degrees;
+  return dict;
+}
+
 // A polygon's corner sequence: a one-dimensional array of vertex indices,
 // each checked against the number of vertices here, because the engine
 // indexes positions by them without checking.
@@ -289,6 +357,15 @@ std::pair<sm::StickFigure, sm::StickFigure> make_figure_pair(const py::object& s
           ? make_named_figure(target_vertices, edges, target_name, "edges", "target")
           : make_named_figure(target_vertices, target_edges, target_name, "target_edges", "target");
   return {std::move(source), std::move(target)};
+}
+
+// #E by 2 vertex indices as an int64 array.
+py::array_t<std::int64_t> to_edge_array(const std::vector<sm::Edge>& edges) {
+  py::array_t<std::int64_t> out({static_cast<py::ssize_t>(edges.size()), py::ssize_t{2}});
+  auto w = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < edges.size(); ++i)
+    for (py::ssize_t j = 0; j < 2; ++j) w(static_cast<py::ssize_t>(i), j) = edges[i][static_cast<std::size_t>(j)];
+  return out;
 }
 
 // #T by 3 node indices as an int64 array.

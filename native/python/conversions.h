@@ -17,6 +17,7 @@
 
 #include "stickmorph/compatibility.h"
 #include "stickmorph/errors.h"
+#include "stickmorph/figure_correspondence.h"
 #include "stickmorph/figure_triangulation.h"
 #include "stickmorph/stick_figure.h"
 
@@ -45,6 +46,15 @@ py::array_t<std::int64_t> to_int64_array(const std::vector<Int>& values) {
 /// An (n, 2) real array-like as positions; `name` names it in messages.
 std::vector<sm::Vec2> to_vertices(py::handle object, const std::string& name);
 
+/// #P by 2 vertex pairs (source, target) for correspond=; None gives none.
+std::vector<sm::VertexPin> to_pins(const py::object& object);
+
+/// The matching as morph()'s and correspond()'s "correspondence" dict.
+py::dict correspondence_dict(const sm::FigureCorrespondence& correspondence);
+
+/// How the matching was found, as stats["correspondence"].
+py::dict matching_stats_dict(const sm::FigureCorrespondence& correspondence);
+
 /// A polygon's corner sequence, each index checked against vertex_count.
 std::vector<int> to_corners(py::handle object, std::size_t vertex_count);
 
@@ -66,6 +76,7 @@ std::pair<sm::StickFigure, sm::StickFigure> make_figure_pair(const py::object& s
 void check_polygon_coordinates(const std::vector<sm::Vec2>& positions, const std::string& role);
 
 py::array_t<double> to_point_array(const std::vector<sm::Vec2>& points);
+py::array_t<std::int64_t> to_edge_array(const std::vector<sm::Edge>& edges);
 py::array_t<std::int64_t> to_triangle_array(const std::vector<std::array<int, 3>>& triangles);
 
 /// An integer argument of any size (beyond long long it saturates; the

@@ -49,6 +49,8 @@ const char* incompatibility_name(sm::Incompatibility kind) {
     case sm::Incompatibility::MirrorImage: return "mirror_image";
     case sm::Incompatibility::RotationDiffers: return "rotation_differs";
     case sm::Incompatibility::ExteriorDiffers: return "exterior_differs";
+    case sm::Incompatibility::TopologyDiffers: return "topology_differs";
+    case sm::Incompatibility::PinsUnsatisfiable: return "pins_unsatisfiable";
   }
   throw sm::InternalError("stickmorph module: unknown Incompatibility value " +
                           std::to_string(static_cast<int>(kind)));

@@ -19,6 +19,9 @@ const std::vector<OptionName>& option_names() {
       {Option::Rotation, "--rotation", "rotation"},
       {Option::Turns, "--turns", "turns"},
       {Option::Easing, "--easing", "easing"},
+      // Figures drawn separately (issue 13).
+      {Option::Correspond, "--correspond", "correspond"},
+      {Option::Pins, "--pin", "pins"},
   };
   return table;
 }

@@ -52,6 +52,8 @@ enum class Option {
   Rotation,
   Turns,
   Easing,
+  Correspond,
+  Pins,
 };
 
 /// Which interface's names messages use: the CLI's "--enclosure-sides" or

@@ -24,6 +24,10 @@ enum class Incompatibility {
   MirrorImage,         ///< the target is a reflection of the source
   RotationDiffers,     ///< a vertex sees its edges in another cyclic order
   ExteriorDiffers,     ///< same cyclic sequences, another one is exterior
+  // Only from correspond_figures (figure_correspondence.h), for figures that
+  // do not correspond by index.
+  TopologyDiffers,     ///< no matching of the skeletons: loops, ends, junction degrees or their arrangement differ
+  PinsUnsatisfiable,   ///< the figures match, but no matching respects every pin
 };
 
 /// The answer of check_compatibility, with a reason naming vertices.

@@ -221,6 +221,11 @@ void check_morph_options(const MorphStickFiguresOptions& options) {
                  "only the rigid method factors out a rotation and follows a guide");
   if (options.enclosure_sides) check_enclosure_sides(*options.enclosure_sides, options.spelling);
   if (options.turns) check_turns(*options.turns, options.spelling);
+  if (!options.pins.empty() && options.correspond != CorrespondenceMode::Auto)
+    throw InvalidArgumentError(describe_option(Option::Pins, options.spelling) + " needs " +
+                               (options.spelling == OptionSpelling::CommandLine ? "--correspond auto"
+                                                                                : "correspond='auto'") +
+                               " (with the index correspondence every vertex is already paired)");
 }
 
 GuidedMorph prepare_rigid_morph(const StickFigure& source, const StickFigure& target,
@@ -229,6 +234,9 @@ GuidedMorph prepare_rigid_morph(const StickFigure& source, const StickFigure& ta
     throw InvalidArgumentError("prepare_rigid_morph is the rigid method's; method is " +
                                morph_method_name(options.method));
   check_morph_options(options);
+  if (options.correspond != CorrespondenceMode::ByIndex)
+    throw InvalidArgumentError("prepare_rigid_morph takes figures that correspond by index: match them with "
+                               "correspond_figures first and pass its source and target");
   FigureTriangulationOptions paper;
   paper.method = options.steiner.value_or(SteinerMethod::Improved);
   paper.enclosure_sides = options.enclosure_sides ? int(*options.enclosure_sides) : kDefaultEnclosureSides;
@@ -239,9 +247,11 @@ GuidedMorph prepare_rigid_morph(const StickFigure& source, const StickFigure& ta
   return morph;
 }
 
-MorphStickFiguresResult morph_stick_figures(const StickFigure& source, const StickFigure& target,
+namespace {
+
+// Steps 1-5 on a pair that corresponds by index; options already checked.
+MorphStickFiguresResult morph_corresponding(const StickFigure& source, const StickFigure& target,
                                             const MorphStickFiguresOptions& options) {
-  check_morph_options(options);
   MorphStickFiguresResult result;
   result.triangulation_options.method = options.steiner.value_or(SteinerMethod::Improved);
   result.triangulation_options.enclosure_sides =
@@ -308,6 +318,21 @@ MorphStickFiguresResult morph_stick_figures(const StickFigure& source, const Sti
   if (options.keep_node_frames) result.node_frames = std::move(morphed.frames);
   result.times = std::move(morphed.times);
   result.triangulation = std::move(triangulation);
+  return result;
+}
+
+}  // namespace
+
+MorphStickFiguresResult morph_stick_figures(const StickFigure& source, const StickFigure& target,
+                                            const MorphStickFiguresOptions& options) {
+  check_morph_options(options);
+  if (options.correspond == CorrespondenceMode::ByIndex) return morph_corresponding(source, target, options);
+  CorrespondenceOptions matching;
+  matching.pins = options.pins;
+  FigureCorrespondence correspondence = correspond_figures(source, target, matching);
+  MorphStickFiguresResult result = morph_corresponding(correspondence.source, correspondence.target, options);
+  result.stats.correspond_ms = correspondence.milliseconds;
+  result.correspondence = std::move(correspondence);
   return result;
 }
 

@@ -19,6 +19,10 @@
 // as-rigid-as-possible guide wherever that is valid (guided_morph.h, after
 // the paper's [17]), at even speed. Every frame is verified exactly, as in
 // method Barycentric, which is step 4 as the paper has it.
+//
+// With correspond = Auto (issue 13) the two figures need not correspond by
+// index: correspond_figures matches them first (section 6's dummy vertices)
+// and every step above runs on the matched figure.
 #pragma once
 
 #include <optional>
@@ -27,6 +31,7 @@
 
 #include "stickmorph/argument_limits.h"
 #include "stickmorph/compatible_triangulation.h"
+#include "stickmorph/figure_correspondence.h"
 #include "stickmorph/figure_triangulation.h"
 #include "stickmorph/guided_morph.h"
 #include "stickmorph/morph.h"
@@ -69,6 +74,12 @@ struct MorphStickFiguresOptions {
   std::optional<RotationDirection> rotation;   ///< default RotationDirection::Short
   std::optional<long long> turns;              ///< extra whole turns, ccw positive; default 0
   std::optional<Easing> easing;                ///< default Easing::None (even speed)
+  /// ByIndex (default): vertex i becomes vertex i. Auto: the figures are
+  /// matched (correspond_figures) and the matched figure is morphed.
+  CorrespondenceMode correspond = CorrespondenceMode::ByIndex;
+  /// Auto only: vertex pairs the matching must respect; given with ByIndex
+  /// they are refused (pins have no meaning where the indices decide).
+  std::vector<VertexPin> pins;
   /// Also return every frame with all n+k+s triangulation nodes
   /// (MorphStickFiguresResult::node_frames), for drawing the triangulation
   /// under the figure or re-checking its triangles. Rigid and barycentric
@@ -89,6 +100,7 @@ struct MorphStickFiguresStats {
   double solve_ms = 0;        ///< part of morph_ms (linear: the interpolation)
   double verify_ms = 0;       ///< part of morph_ms (linear: finding the invalid frames)
   int refined_frames = 0;     ///< see MorphStats; 0 for linear
+  double correspond_ms = 0;   ///< correspond = Auto: the matching; not part of the others
   int factorizations = 0;     ///< see MorphStats; 0 for linear
   /// Rigid only: how the interior frames were made (GuideFit) and the
   /// similarity factored out; whether it was (false when the mapped-back
@@ -125,6 +137,10 @@ struct MorphStickFiguresResult {
   FigureTriangulationOptions triangulation_options;
   MorphOptions morph_options;
   MorphStickFiguresStats stats;
+  /// correspond = Auto only: the matching. The frames, node frames and the
+  /// triangulation are then the matched figure's (correspondence->source
+  /// and ->target: m vertices, their edges), not the inputs'.
+  std::optional<FigureCorrespondence> correspondence;
 };
 
 /// Checks `options` without morphing: what morph_stick_figures does first.
@@ -133,11 +149,15 @@ struct MorphStickFiguresResult {
 /// @throws InvalidArgumentError: frames or enclosure_sides out of range, or
 ///         an option the linear method would ignore (steiner, weights,
 ///         enclosure_sides, verify, keep_node_frames), or a rigid-only
-///         option (rotation, turns, easing) with another method.
+///         option (rotation, turns, easing) with another method, or pins
+///         without correspond = Auto.
 void check_morph_options(const MorphStickFiguresOptions& options);
 
-/// Algorithm 3 on two figures whose vertices correspond by index.
-/// @throws InvalidArgumentError (check_morph_options), IncompatibleFiguresError
+/// Algorithm 3 on two figures whose vertices correspond by index, or on the
+/// matched figure of two that do not (options.correspond).
+/// @throws InvalidArgumentError (check_morph_options, or a pin
+///         correspond_figures refuses), IncompatibleFiguresError
+///         (correspond_figures' topology, mirror and pin kinds included)
 ///         (with the compatibility report's kind and vertices),
 ///         VerificationError (a triangulation or frame that could not be
 ///         verified), as triangulate_figures and morph_triangulation do;

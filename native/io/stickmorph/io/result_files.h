@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "stickmorph/figure_correspondence.h"
 #include "stickmorph/figure_triangulation.h"
 #include "stickmorph/io/json.h"
 #include "stickmorph/morph.h"
@@ -46,6 +47,10 @@ struct MorphProvenance {
   const std::vector<int>* invalid_frames = nullptr;
   /// The rigid method's report; null for the other methods.
   const RigidMotionReport* rigid = nullptr;
+  /// --correspond auto: the matching ("correspondence", FORMAT.md, and
+  /// stats.correspondence); null for figures that correspond by index.
+  const FigureCorrespondence* correspondence = nullptr;
+  double correspond_ms = 0;   ///< wall-clock time of the matching, with a correspondence
   double triangulate_ms = 0;  ///< wall-clock time of the triangulation
   double morph_ms = 0;        ///< wall-clock time of the morph
 };
@@ -56,6 +61,15 @@ struct MorphProvenance {
 /// @throws InvalidArgumentError for a non-finite number (JSON has none).
 std::string morph_file_json(const StickFigure& source, const std::vector<double>& times,
                             const std::vector<std::vector<Vec2>>& frames, const MorphProvenance& how);
+
+/// The "correspondence" object: for each matched vertex its source vertex
+/// and target vertex (-1 for a dummy), and the edge and fraction a dummy
+/// lies at ("source_edge", "source_fraction", ...; an extension).
+void write_correspondence(JsonWriter& out, const FigureCorrespondence& correspondence);
+
+/// The file of `stickmorph correspond`: the matched figure on the source
+/// and on the target drawing, as figure objects, and the correspondence.
+std::string correspondence_file_json(const FigureCorrespondence& correspondence);
 
 /// The triangulation file: the triangulation object on its own,
 /// pretty-printed, ending with a newline.

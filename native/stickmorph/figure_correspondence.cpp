@@ -1,0 +1,1004 @@
+// Automatic correspondence (figure_correspondence.h): skeletons matched as
+// plane maps, chains resampled by arc length with dummy vertices (Surazhsky
+// & Gotsman 2001, section 6).
+#include "stickmorph/figure_correspondence.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <optional>
+#include <utility>
+
+#include "stickmorph/compatibility.h"
+#include "stickmorph/decomposition.h"
+#include "stickmorph/errors.h"
+#include "stickmorph/exact_predicates.h"
+
+namespace stickmorph {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Arc-length samples per chain (and per loop) for the geometric cost: enough
+// to tell a stroke's shape, independent of how finely it is drawn.
+constexpr int kChainSamples = 8;
+constexpr int kLoopSamples = 128;
+// A vertex pairs with one of the other figure when their arc lengths differ
+// by less than this share of the spacing around both (then each has at most
+// one candidate and the pairs keep their order along the chain).
+constexpr double kMergeShare = 0.3;
+// Costs within this much of the best are ties, broken by the smaller
+// rotation: a square matched onto a square has four equal fits.
+constexpr double kTieRelative = 0.02;
+constexpr double kTieAbsolute = 1e-4;
+
+// ---------------------------------------------------------------- tracks ---
+
+/// A chain between two nodes, or a whole loop, as a walk along the figure:
+/// vertices[k] to vertices[k + 1] over edges[k]. A loop repeats nothing: its
+/// last edge closes back to vertices[0].
+struct Track {
+  std::vector<int> vertices;
+  std::vector<int> edges;
+  std::vector<double> arc;  ///< arc[k]: length from vertices[0] to vertices[k]; arc.back() the total
+  bool closed = false;
+  double length() const { return arc.back(); }
+};
+
+double distance(const Vec2& a, const Vec2& b) { return std::hypot(b[0] - a[0], b[1] - a[1]); }
+
+Track make_track(const StickFigure& figure, std::vector<int> vertices, std::vector<int> edges, bool closed) {
+  Track track;
+  track.closed = closed;
+  track.arc.push_back(0);
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    const int a = vertices[k], b = vertices[(k + 1) % vertices.size()];
+    track.arc.push_back(track.arc.back() + distance(figure.vertices[a], figure.vertices[b]));
+  }
+  track.vertices = std::move(vertices);
+  track.edges = std::move(edges);
+  return track;
+}
+
+/// Parameter (arc length over total) of the track's k-th vertex.
+double vertex_parameter(const Track& track, std::size_t k) { return track.arc[k] / track.length(); }
+
+/// The point at parameter u in [0, 1] (a loop wraps u into [0, 1)): the
+/// segment slot k it falls in and the fraction along that slot.
+std::pair<std::size_t, double> locate(const Track& track, double u) {
+  if (track.closed) u -= std::floor(u);
+  u = std::clamp(u, 0.0, 1.0);
+  const double s = u * track.length();
+  std::size_t k = std::size_t(std::upper_bound(track.arc.begin(), track.arc.end(), s) - track.arc.begin());
+  k = std::min(std::max<std::size_t>(k, 1), track.edges.size()) - 1;
+  const double span = track.arc[k + 1] - track.arc[k];
+  return {k, span > 0 ? std::clamp((s - track.arc[k]) / span, 0.0, 1.0) : 0.0};
+}
+
+Vec2 point_on(const Vec2& a, const Vec2& b, double f) {
+  return {a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1])};
+}
+
+Vec2 point_at(const StickFigure& figure, const Track& track, double u) {
+  const auto [k, f] = locate(track, u);
+  const Vec2& a = figure.vertices[track.vertices[k]];
+  const Vec2& b = figure.vertices[track.vertices[(k + 1) % track.vertices.size()]];
+  return point_on(a, b, f);
+}
+
+// -------------------------------------------------------------- skeleton ---
+
+/// A figure's skeleton: the nodes (degree != 2) and the chains between them,
+/// as a plane map whose darts are the figure darts that leave a node.
+struct Skeleton {
+  const StickFigure* figure = nullptr;
+  Decomposition decomposition;
+  std::vector<int> degree;
+  std::vector<int> nodes;             ///< vertices of degree != 2, increasing
+  std::vector<Track> chains;
+  std::vector<int> chain_first;       ///< per chain: the dart leaving vertices[0] into it (-1 for a loop)
+  std::vector<int> chain_of_dart;     ///< per figure dart leaving a node: its chain, else -1
+  std::vector<char> forward;          ///< per such dart: runs the chain from vertices[0]
+  std::vector<int> far_dart;          ///< per such dart: the dart leaving the other end into the chain
+  std::vector<int> chain_of_vertex;   ///< per vertex of degree 2: its chain (or 0 for a loop)
+  std::vector<int> slot_of_vertex;    ///< per vertex of degree 2: its index in the chain's vertices
+  int loops = 0;                      ///< independent cycles, E - V + 1
+
+  bool is_loop() const { return nodes.empty() && !figure->edges.empty(); }
+  int dart_count() const { return int(chain_of_dart.size()); }
+  bool leaves_node(int dart) const { return chain_of_dart[std::size_t(dart)] >= 0; }
+  int node_of(int dart) const { return decomposition.rotation.tail[std::size_t(dart)]; }
+  /// The next dart counter-clockwise around the dart's node.
+  int ccw_next(int dart) const {
+    const RotationSystem& rotation = decomposition.rotation;
+    const auto& around = rotation.outgoing_ccw[std::size_t(node_of(dart))];
+    return around[std::size_t((rotation.position[std::size_t(dart)] + 1) % int(around.size()))];
+  }
+};
+
+Skeleton make_skeleton(const StickFigure& figure) {
+  Skeleton skeleton;
+  skeleton.figure = &figure;
+  skeleton.decomposition = decompose(figure);
+  const RotationSystem& rotation = skeleton.decomposition.rotation;
+  const std::size_t n = figure.vertices.size(), darts = 2 * figure.edges.size();
+  skeleton.degree.assign(n, 0);
+  for (std::size_t v = 0; v < n; ++v) skeleton.degree[v] = int(rotation.outgoing_ccw[v].size());
+  for (std::size_t v = 0; v < n; ++v)
+    if (skeleton.degree[v] != 2) skeleton.nodes.push_back(int(v));
+  skeleton.loops = int(figure.edges.size()) - int(n) + 1;
+  skeleton.chain_of_dart.assign(darts, -1);
+  skeleton.forward.assign(darts, 0);
+  skeleton.far_dart.assign(darts, -1);
+  skeleton.chain_of_vertex.assign(n, -1);
+  skeleton.slot_of_vertex.assign(n, -1);
+  // The dart leaving head(d) on the other edge of a degree-2 vertex.
+  auto continue_through = [&](int dart) {
+    const int head = dart_head(figure, dart);
+    const auto& around = rotation.outgoing_ccw[std::size_t(head)];
+    return around[0] == dart_twin(dart) ? around[1] : around[0];
+  };
+  if (skeleton.is_loop()) {
+    // Walk the loop counter-clockwise (interior on the left), from vertex 0.
+    int dart = rotation.outgoing_ccw[0][0];
+    std::vector<int> vertices, edges;
+    for (std::size_t k = 0; k < figure.edges.size(); ++k) {
+      vertices.push_back(dart_tail(figure, dart));
+      edges.push_back(dart_edge(dart));
+      dart = continue_through(dart);
+    }
+    std::vector<Vec2> corners;
+    for (int v : vertices) corners.push_back(figure.vertices[std::size_t(v)]);
+    if (signed_area_sign(corners) < 0) {
+      std::reverse(vertices.begin() + 1, vertices.end());
+      std::reverse(edges.begin(), edges.end());
+    }
+    for (std::size_t k = 0; k < vertices.size(); ++k) {
+      skeleton.chain_of_vertex[std::size_t(vertices[k])] = 0;
+      skeleton.slot_of_vertex[std::size_t(vertices[k])] = int(k);
+    }
+    skeleton.chains.push_back(make_track(figure, std::move(vertices), std::move(edges), true));
+    skeleton.chain_first.push_back(-1);
+    return skeleton;
+  }
+  for (int node : skeleton.nodes) {
+    for (int first : rotation.outgoing_ccw[std::size_t(node)]) {
+      if (skeleton.chain_of_dart[std::size_t(first)] >= 0) continue;  // walked from its other end
+      std::vector<int> vertices{node}, edges;
+      int dart = first;
+      while (true) {
+        edges.push_back(dart_edge(dart));
+        const int head = dart_head(figure, dart);
+        vertices.push_back(head);
+        if (skeleton.degree[std::size_t(head)] != 2) break;
+        dart = continue_through(dart);
+      }
+      const int chain = int(skeleton.chains.size());
+      const int last = dart_twin(dart);
+      skeleton.chain_of_dart[std::size_t(first)] = chain;
+      skeleton.forward[std::size_t(first)] = 1;
+      skeleton.chain_of_dart[std::size_t(last)] = chain;
+      skeleton.forward[std::size_t(last)] = 0;
+      skeleton.far_dart[std::size_t(first)] = last;
+      skeleton.far_dart[std::size_t(last)] = first;
+      skeleton.chain_first.push_back(first);
+      for (std::size_t k = 1; k + 1 < vertices.size(); ++k) {
+        skeleton.chain_of_vertex[std::size_t(vertices[k])] = chain;
+        skeleton.slot_of_vertex[std::size_t(vertices[k])] = int(k);
+      }
+      skeleton.chains.push_back(make_track(figure, std::move(vertices), std::move(edges), false));
+    }
+  }
+  return skeleton;
+}
+
+std::string plural(long long count, const char* one, const char* many) {
+  return std::to_string(count) + " " + (count == 1 ? one : many);
+}
+
+// "2 ends and junctions of degree 3, 3": a skeleton's node degrees in words.
+std::string describe_nodes(const Skeleton& skeleton) {
+  if (skeleton.figure->edges.empty()) return "a single vertex";
+  if (skeleton.is_loop()) return "one closed loop with no junction or end";
+  int ends = 0;
+  std::vector<int> junctions;
+  for (int node : skeleton.nodes) {
+    if (skeleton.degree[std::size_t(node)] == 1)
+      ++ends;
+    else
+      junctions.push_back(skeleton.degree[std::size_t(node)]);
+  }
+  std::sort(junctions.begin(), junctions.end());
+  std::string text = plural(ends, "end", "ends");
+  if (junctions.empty()) return text + " and no junction";
+  text += junctions.size() == 1 ? " and a junction of degree " : " and junctions of degree ";
+  for (std::size_t k = 0; k < junctions.size() && k < 12; ++k) text += (k ? ", " : "") + std::to_string(junctions[k]);
+  if (junctions.size() > 12) text += ", ... (" + std::to_string(junctions.size()) + " junctions)";
+  return text;
+}
+
+[[noreturn]] void topology_differs(const std::string& what) {
+  throw IncompatibleFiguresError(Incompatibility::TopologyDiffers,
+                                 "correspond: the figures' topologies cannot be matched: " + what);
+}
+
+// The invariants that any matching needs, compared first so that the
+// message says what differs in the user's terms.
+void compare_invariants(const Skeleton& source, const Skeleton& target) {
+  if (source.loops != target.loops)
+    topology_differs("the source has " + plural(source.loops, "loop", "loops") + " (independent cycles), the target " +
+                     std::to_string(target.loops) +
+                     (source.loops == 0 || target.loops == 0 ? " (an open figure cannot become a closed one)" : ""));
+  std::vector<int> source_degrees, target_degrees;
+  for (int node : source.nodes) source_degrees.push_back(source.degree[std::size_t(node)]);
+  for (int node : target.nodes) target_degrees.push_back(target.degree[std::size_t(node)]);
+  std::sort(source_degrees.begin(), source_degrees.end());
+  std::sort(target_degrees.begin(), target_degrees.end());
+  if (source_degrees != target_degrees || source.is_loop() != target.is_loop() ||
+      source.figure->edges.empty() != target.figure->edges.empty())
+    topology_differs("the source has " + describe_nodes(source) + ", the target " + describe_nodes(target));
+}
+
+// ------------------------------------------------------------------ cost ---
+
+/// Weighted similarity fit of sample pairs: the residual
+/// 1 - |sum w conj(a) b|^2 / (sum w |a|^2 * sum w |b|^2) of centred points
+/// (0 for a perfect similarity, 1 for no relation) and the rotation.
+struct Fit {
+  double residual = 1;
+  double rotation = 0;  ///< radians, counter-clockwise, in (-pi, pi]
+};
+
+struct SampleSet {
+  std::vector<std::complex<double>> a, b;
+  std::vector<double> w;
+  void add(const Vec2& p, const Vec2& q, double weight) {
+    a.emplace_back(p[0], p[1]);
+    b.emplace_back(q[0], q[1]);
+    w.push_back(weight);
+  }
+  Fit fit() const {
+    double total = 0;
+    std::complex<double> ca, cb;
+    for (std::size_t k = 0; k < w.size(); ++k) {
+      total += w[k];
+      ca += w[k] * a[k];
+      cb += w[k] * b[k];
+    }
+    Fit result;
+    if (!(total > 0)) return result;
+    ca /= total;
+    cb /= total;
+    std::complex<double> cross;
+    double aa = 0, bb = 0;
+    for (std::size_t k = 0; k < w.size(); ++k) {
+      const std::complex<double> p = a[k] - ca, q = b[k] - cb;
+      cross += w[k] * std::conj(p) * q;
+      aa += w[k] * std::norm(p);
+      bb += w[k] * std::norm(q);
+    }
+    if (!(aa > 0) || !(bb > 0)) {
+      result.residual = (aa > 0) == (bb > 0) ? 0 : 1;
+      return result;
+    }
+    result.residual = std::clamp(1.0 - std::norm(cross) / (aa * bb), 0.0, 1.0);
+    result.rotation = std::arg(cross);
+    return result;
+  }
+};
+
+/// A monotone map from a source track's parameter to a target track's,
+/// piecewise linear through anchors (u_k, w_k): the chain's ends and its
+/// pins; for a loop, the pins or one shift, continued periodically.
+struct ParameterMap {
+  std::vector<double> u, w;  ///< increasing; a loop's w may exceed 1 (unwrapped)
+  bool closed = false;
+
+  double to_target(double x) const { return apply(u, w, x); }
+  double to_source(double y) const { return apply(w, u, y); }
+
+ private:
+  double apply(const std::vector<double>& from, const std::vector<double>& to, double x) const {
+    if (!closed) {
+      std::size_t k = std::size_t(std::upper_bound(from.begin(), from.end(), x) - from.begin());
+      k = std::min(std::max<std::size_t>(k, 1), from.size() - 1) - 1;
+      const double span = from[k + 1] - from[k];
+      return to[k] + (span > 0 ? (x - from[k]) / span : 0.0) * (to[k + 1] - to[k]);
+    }
+    // Periodic: shift x into [from[0], from[0] + 1) and add the closing anchor.
+    const double base = from[0];
+    double y = x - std::floor(x - base);
+    std::size_t k = std::size_t(std::upper_bound(from.begin(), from.end(), y) - from.begin()) - 1;
+    const double f0 = from[k], t0 = to[k];
+    const double f1 = k + 1 < from.size() ? from[k + 1] : from[0] + 1;
+    const double t1 = k + 1 < to.size() ? to[k + 1] : to[0] + 1;
+    const double r = f1 > f0 ? (y - f0) / (f1 - f0) : 0.0;
+    y = t0 + r * (t1 - t0);
+    return y - std::floor(y);
+  }
+};
+
+/// One chain of the source matched with one of the target, in a direction.
+struct ChainMatch {
+  int source_chain = -1;
+  int target_chain = -1;
+  bool reversed = false;  ///< the target chain is run from its last vertex
+  ParameterMap map;       ///< source parameter -> target parameter along the run
+};
+
+/// A target track's parameter in the direction the match runs it.
+double run_parameter(double w, bool reversed) { return reversed ? 1.0 - w : w; }
+
+/// A candidate matching: node images and the chain pairs.
+struct Candidate {
+  std::vector<int> node_image;     ///< per source vertex: target node, -1 if not a node
+  std::vector<ChainMatch> chains;  ///< per source chain
+  Fit fit;
+};
+
+// Samples of every chain pair for the similarity fit, weighted by the
+// chains' share of the drawings' lengths so that a long stroke counts more
+// than a short one however finely either is drawn.
+Fit candidate_fit(const Skeleton& source, const Skeleton& target, const std::vector<ChainMatch>& chains,
+                  int samples_per_chain) {
+  double source_total = 0, target_total = 0;
+  for (const Track& t : source.chains) source_total += t.length();
+  for (const Track& t : target.chains) target_total += t.length();
+  SampleSet set;
+  for (const ChainMatch& match : chains) {
+    const Track& s = source.chains[std::size_t(match.source_chain)];
+    const Track& t = target.chains[std::size_t(match.target_chain)];
+    const double weight = (s.length() / source_total + t.length() / target_total) / (2.0 * (samples_per_chain + 1));
+    const int count = s.closed ? samples_per_chain : samples_per_chain + 1;
+    for (int k = 0; k < count; ++k) {
+      const double u = (s.closed ? match.map.u[0] : 0.0) + double(k) / samples_per_chain;
+      const double w = run_parameter(match.map.to_target(u), match.reversed);
+      set.add(point_at(*source.figure, s, u), point_at(*target.figure, t, w), weight);
+    }
+  }
+  return set.fit();
+}
+
+// --------------------------------------------------------------- pins ------
+
+struct PinPlace {
+  int source_chain = -1, target_chain = -1;
+  double u = 0, w = 0;  ///< parameters along the stored tracks
+};
+
+/// Checks the pins against the figures (InvalidArgumentError) and sorts them
+/// into node pins (source node -> target node) and chain pins.
+void classify_pins(const Skeleton& source, const Skeleton& target, const std::vector<VertexPin>& pins,
+                   std::vector<std::pair<int, int>>& node_pins, std::vector<PinPlace>& chain_pins) {
+  const int ns = int(source.figure->vertices.size()), nt = int(target.figure->vertices.size());
+  std::vector<int> source_seen(std::size_t(ns), -1), target_seen(std::size_t(nt), -1);
+  for (std::size_t k = 0; k < pins.size(); ++k) {
+    const VertexPin& pin = pins[k];
+    const std::string name = "pin " + std::to_string(pin.source) + ":" + std::to_string(pin.target);
+    if (pin.source < 0 || pin.source >= ns)
+      throw InvalidArgumentError("correspond: " + name + ": the source has no vertex " + std::to_string(pin.source) +
+                                 " (it has " + plural(ns, "vertex", "vertices") + ")");
+    if (pin.target < 0 || pin.target >= nt)
+      throw InvalidArgumentError("correspond: " + name + ": the target has no vertex " + std::to_string(pin.target) +
+                                 " (it has " + plural(nt, "vertex", "vertices") + ")");
+    if (source_seen[std::size_t(pin.source)] >= 0)
+      throw InvalidArgumentError("correspond: source vertex " + std::to_string(pin.source) + " is pinned twice");
+    if (target_seen[std::size_t(pin.target)] >= 0)
+      throw InvalidArgumentError("correspond: target vertex " + std::to_string(pin.target) + " is pinned twice");
+    source_seen[std::size_t(pin.source)] = target_seen[std::size_t(pin.target)] = int(k);
+    const int ds = source.degree[std::size_t(pin.source)], dt = target.degree[std::size_t(pin.target)];
+    if ((ds == 2) != (dt == 2) || (ds != 2 && ds != dt))
+      throw InvalidArgumentError("correspond: " + name + " joins a vertex of degree " + std::to_string(ds) +
+                                 " to one of degree " + std::to_string(dt) +
+                                 " (a junction or end matches only one of the same degree, a vertex inside a "
+                                 "stroke only one inside a stroke)");
+    if (ds != 2) {
+      node_pins.emplace_back(pin.source, pin.target);
+      continue;
+    }
+    PinPlace place;
+    place.source_chain = source.chain_of_vertex[std::size_t(pin.source)];
+    place.target_chain = target.chain_of_vertex[std::size_t(pin.target)];
+    place.u = vertex_parameter(source.chains[std::size_t(place.source_chain)],
+                               std::size_t(source.slot_of_vertex[std::size_t(pin.source)]));
+    place.w = vertex_parameter(target.chains[std::size_t(place.target_chain)],
+                               std::size_t(target.slot_of_vertex[std::size_t(pin.target)]));
+    chain_pins.push_back(place);
+  }
+}
+
+/// The parameter map of an open chain pair through its pins, or nothing if
+/// the pins on it are out of order in the matched direction.
+std::optional<ParameterMap> chain_map(const std::vector<PinPlace>& pins, int source_chain, int target_chain,
+                                      bool reversed) {
+  std::vector<std::pair<double, double>> anchors{{0.0, 0.0}, {1.0, 1.0}};
+  for (const PinPlace& pin : pins) {
+    if (pin.source_chain != source_chain) continue;
+    if (pin.target_chain != target_chain) return std::nullopt;
+    anchors.emplace_back(pin.u, run_parameter(pin.w, reversed));
+  }
+  std::sort(anchors.begin(), anchors.end());
+  ParameterMap map;
+  for (std::size_t k = 0; k < anchors.size(); ++k) {
+    if (k > 0 && !(anchors[k].second > anchors[k - 1].second)) return std::nullopt;
+    map.u.push_back(anchors[k].first);
+    map.w.push_back(anchors[k].second);
+  }
+  return map;
+}
+
+// --------------------------------------------------------- isomorphisms ---
+
+/// The orientation-preserving isomorphism of the skeletons that sends
+/// source dart `seed` to target dart `image`, if there is one: breadth first
+/// over the two relations an isomorphism keeps, the next dart around a node
+/// and the dart at the far end of a chain. Returns the image of every
+/// source dart that leaves a node (-1 elsewhere).
+std::optional<std::vector<int>> extend_isomorphism(const Skeleton& source, const Skeleton& target, int seed,
+                                                   int image) {
+  std::vector<int> forward(std::size_t(source.dart_count()), -1), backward(std::size_t(target.dart_count()), -1);
+  std::vector<std::pair<int, int>> queue{{seed, image}};
+  forward[std::size_t(seed)] = image;
+  backward[std::size_t(image)] = seed;
+  for (std::size_t next = 0; next < queue.size(); ++next) {
+    const auto [d, e] = queue[next];
+    if (source.degree[std::size_t(source.node_of(d))] != target.degree[std::size_t(target.node_of(e))])
+      return std::nullopt;
+    for (const auto& [dd, ee] : {std::pair{source.ccw_next(d), target.ccw_next(e)},
+                                 std::pair{source.far_dart[std::size_t(d)], target.far_dart[std::size_t(e)]}}) {
+      const int known = forward[std::size_t(dd)];
+      if (known == ee) continue;
+      if (known >= 0 || backward[std::size_t(ee)] >= 0) return std::nullopt;
+      forward[std::size_t(dd)] = ee;
+      backward[std::size_t(ee)] = dd;
+      queue.emplace_back(dd, ee);
+    }
+  }
+  return forward;
+}
+
+/// A source dart on the exterior face that leaves a node.
+int exterior_dart(const Skeleton& skeleton) {
+  const Decomposition& dec = skeleton.decomposition;
+  for (int dart : dec.sequences[std::size_t(dec.exterior)].darts)
+    if (skeleton.leaves_node(dart)) return dart;
+  throw InternalError("correspond: the exterior face of a figure with nodes holds no dart leaving a node");
+}
+
+struct Search {
+  std::vector<Candidate> candidates;  ///< every isomorphism keeping the exterior and the pins
+  bool any_isomorphism = false;       ///< ignoring the exterior and the pins
+  bool any_exterior = false;          ///< keeping the exterior, ignoring the pins
+  std::string pin_conflict;           ///< why the first isomorphism keeping the exterior broke the pins
+};
+
+Search search_isomorphisms(const Skeleton& source, const Skeleton& target,
+                           const std::vector<std::pair<int, int>>& node_pins, const std::vector<PinPlace>& chain_pins,
+                           bool with_cost) {
+  Search search;
+  // Seed at the node whose degree is rarest among the target's nodes (or at
+  // a pinned node): the fewest images to try, each O(skeleton) to extend.
+  std::map<int, int> degree_count;
+  for (int node : target.nodes) ++degree_count[target.degree[std::size_t(node)]];
+  int seed_node = source.nodes[0];
+  for (int node : source.nodes)
+    if (degree_count[source.degree[std::size_t(node)]] < degree_count[source.degree[std::size_t(seed_node)]])
+      seed_node = node;
+  std::vector<int> images;
+  if (!node_pins.empty()) {
+    seed_node = node_pins[0].first;
+    images.push_back(node_pins[0].second);
+  } else {
+    for (int node : target.nodes)
+      if (target.degree[std::size_t(node)] == source.degree[std::size_t(seed_node)]) images.push_back(node);
+  }
+  const int seed = source.decomposition.rotation.outgoing_ccw[std::size_t(seed_node)][0];
+  const int source_exterior = exterior_dart(source);
+  const int target_exterior = target.decomposition.exterior;
+  for (int image_node : images) {
+    for (int image : target.decomposition.rotation.outgoing_ccw[std::size_t(image_node)]) {
+      const std::optional<std::vector<int>> map = extend_isomorphism(source, target, seed, image);
+      if (!map) continue;
+      search.any_isomorphism = true;
+      const int exterior_image = (*map)[std::size_t(source_exterior)];
+      if (target.decomposition.sequence_of_dart[std::size_t(exterior_image)] != target_exterior) continue;
+      search.any_exterior = true;
+      Candidate candidate;
+      candidate.node_image.assign(source.figure->vertices.size(), -1);
+      for (int dart = 0; dart < source.dart_count(); ++dart)
+        if (source.leaves_node(dart))
+          candidate.node_image[std::size_t(source.node_of(dart))] = target.node_of((*map)[std::size_t(dart)]);
+      std::string broken;
+      for (const auto& [s, t] : node_pins)
+        if (broken.empty() && candidate.node_image[std::size_t(s)] != t)
+          broken = "it would send source vertex " + std::to_string(s) + " to target vertex " +
+                   std::to_string(candidate.node_image[std::size_t(s)]) + ", not " + std::to_string(t);
+      for (std::size_t chain = 0; chain < source.chains.size() && broken.empty(); ++chain) {
+        const int e = (*map)[std::size_t(source.chain_first[chain])];
+        ChainMatch match;
+        match.source_chain = int(chain);
+        match.target_chain = target.chain_of_dart[std::size_t(e)];
+        match.reversed = !target.forward[std::size_t(e)];
+        std::optional<ParameterMap> pmap = chain_map(chain_pins, match.source_chain, match.target_chain, match.reversed);
+        if (!pmap) {
+          broken = "a pinned vertex inside a stroke would land on another stroke or out of order along it";
+          break;
+        }
+        match.map = *pmap;
+        candidate.chains.push_back(std::move(match));
+      }
+      if (!broken.empty()) {
+        if (search.pin_conflict.empty()) search.pin_conflict = broken;
+        continue;
+      }
+      if (with_cost) candidate.fit = candidate_fit(source, target, candidate.chains, kChainSamples);
+      search.candidates.push_back(std::move(candidate));
+    }
+  }
+  return search;
+}
+
+/// The least-cost candidate; near ties go to the smallest rotation.
+std::size_t best_candidate(const std::vector<Candidate>& candidates) {
+  double least = std::numeric_limits<double>::infinity();
+  for (const Candidate& c : candidates) least = std::min(least, c.fit.residual);
+  const double tie = least + kTieRelative * least + kTieAbsolute;
+  std::size_t best = candidates.size();
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    if (candidates[k].fit.residual > tie) continue;
+    if (best == candidates.size() || std::abs(candidates[k].fit.rotation) < std::abs(candidates[best].fit.rotation))
+      best = k;
+  }
+  return best;
+}
+
+// ---------------------------------------------------------------- loops ---
+
+/// Two loops, both counter-clockwise: the shift of least cost (or the pins'
+/// map), as one candidate.
+Candidate match_loops(const Skeleton& source, const Skeleton& target, const std::vector<PinPlace>& pins,
+                      int& compared) {
+  Candidate candidate;
+  candidate.node_image.assign(source.figure->vertices.size(), -1);
+  ChainMatch match;
+  match.source_chain = 0;
+  match.target_chain = 0;
+  match.map.closed = true;
+  if (!pins.empty()) {
+    std::vector<std::pair<double, double>> anchors;
+    for (const PinPlace& pin : pins) anchors.emplace_back(pin.u, pin.w);
+    std::sort(anchors.begin(), anchors.end());
+    // Counter-clockwise on both: the target parameters must increase once
+    // unwrapped from the first pin's, within one turn.
+    double previous = anchors[0].second;
+    for (std::size_t k = 0; k < anchors.size(); ++k) {
+      double w = anchors[k].second;
+      while (w < previous) w += 1;
+      if (k > 0 && !(w > previous)) w += 1;
+      if (w >= anchors[0].second + 1)
+        throw IncompatibleFiguresError(Incompatibility::PinsUnsatisfiable,
+                                       "correspond: no matching respects every pin: the pinned vertices are not in "
+                                       "the same counter-clockwise order around both loops");
+      match.map.u.push_back(anchors[k].first);
+      match.map.w.push_back(w);
+      previous = w;
+    }
+    candidate.chains.push_back(match);
+    candidate.fit = candidate_fit(source, target, candidate.chains, kLoopSamples);
+    compared = 1;
+    return candidate;
+  }
+  // Shifts on a grid of the samples' spacing, then each near-best one
+  // refined by golden-section search within a grid step.
+  auto fit_at = [&](double shift) {
+    ChainMatch m = match;
+    m.map.u = {0.0};
+    m.map.w = {shift};
+    return candidate_fit(source, target, {m}, kLoopSamples);
+  };
+  std::vector<Fit> grid(kLoopSamples);
+  double least = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < kLoopSamples; ++k) {
+    grid[std::size_t(k)] = fit_at(double(k) / kLoopSamples);
+    least = std::min(least, grid[std::size_t(k)].residual);
+  }
+  const double tie = least + kTieRelative * least + kTieAbsolute;
+  std::vector<std::pair<double, Fit>> refined;
+  for (int k = 0; k < kLoopSamples; ++k) {
+    const Fit& here = grid[std::size_t(k)];
+    const Fit& before = grid[std::size_t((k + kLoopSamples - 1) % kLoopSamples)];
+    const Fit& after = grid[std::size_t((k + 1) % kLoopSamples)];
+    if (here.residual > tie || here.residual > before.residual || here.residual > after.residual) continue;
+    double lo = double(k - 1) / kLoopSamples, hi = double(k + 1) / kLoopSamples;
+    const double golden = 0.5 * (std::sqrt(5.0) - 1);
+    double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo);
+    double f1 = fit_at(x1).residual, f2 = fit_at(x2).residual;
+    for (int iteration = 0; iteration < 40; ++iteration) {
+      if (f1 <= f2) {
+        hi = x2; x2 = x1; f2 = f1; x1 = hi - golden * (hi - lo); f1 = fit_at(x1).residual;
+      } else {
+        lo = x1; x1 = x2; f1 = f2; x2 = lo + golden * (hi - lo); f2 = fit_at(x2).residual;
+      }
+    }
+    const double shift = 0.5 * (lo + hi);
+    refined.emplace_back(shift - std::floor(shift), fit_at(shift));
+  }
+  compared = int(refined.size());
+  std::vector<Candidate> options;
+  for (const auto& [shift, fit] : refined) {
+    Candidate c = candidate;
+    ChainMatch m = match;
+    m.map.u = {0.0};
+    m.map.w = {shift};
+    c.chains.push_back(m);
+    c.fit = fit;
+    options.push_back(std::move(c));
+  }
+  return options[best_candidate(options)];
+}
+
+// ------------------------------------------------------------ resampling ---
+
+/// A place on a track: a vertex of it (slot k) or a dummy at parameter p.
+struct Place {
+  int vertex = -1;   ///< the figure's vertex, or -1
+  double p = 0;      ///< parameter along the stored track
+};
+
+/// One matched vertex along a matched chain, in order.
+struct Item {
+  double order = 0;  ///< common parameter (the source's), for sorting
+  Place source, target;
+};
+
+/// The matched vertices along a chain pair (interior only for a chain, all
+/// for a loop), sorted by the source's parameter: every vertex of both
+/// tracks exactly once, close pairs merged, the rest given dummy partners.
+std::vector<Item> resample(const Track& s, const Track& t, const ChainMatch& match,
+                           const std::vector<std::pair<int, int>>& pinned) {
+  const bool closed = s.closed;
+  const std::size_t first = closed ? 0 : 1;
+  const std::size_t s_end = closed ? s.vertices.size() : s.vertices.size() - 1;
+  const std::size_t t_end = closed ? t.vertices.size() : t.vertices.size() - 1;
+  // The common parameter: the source's, unwrapped from the map's first
+  // anchor for a loop so that sorting follows the loop.
+  const double base = closed ? match.map.u[0] : 0.0;
+  auto common = [&](double u) { return closed ? u - base - std::floor(u - base) : u; };
+  std::vector<char> s_pinned(s.vertices.size(), 0), t_pinned(t.vertices.size(), 0);
+  std::vector<Item> items;
+  for (const auto& [sv, tv] : pinned) {
+    std::size_t ks = first, kt = first;
+    while (ks < s_end && s.vertices[ks] != sv) ++ks;
+    while (kt < t_end && t.vertices[kt] != tv) ++kt;
+    if (ks == s_end || kt == t_end) continue;  // a pin on another chain
+    s_pinned[ks] = t_pinned[kt] = 1;
+    const double u = vertex_parameter(s, ks);
+    items.push_back({common(u), {sv, u}, {tv, vertex_parameter(t, kt)}});
+  }
+  struct Loose {
+    double order;
+    std::size_t slot;
+  };
+  std::vector<Loose> from_source, from_target;
+  for (std::size_t k = first; k < s_end; ++k)
+    if (!s_pinned[k]) from_source.push_back({common(vertex_parameter(s, k)), k});
+  for (std::size_t k = first; k < t_end; ++k)
+    if (!t_pinned[k]) {
+      const double w = run_parameter(vertex_parameter(t, k), match.reversed);
+      from_target.push_back({common(match.map.to_source(w)), k});
+    }
+  auto by_order = [](const Loose& a, const Loose& b) { return a.order < b.order; };
+  std::sort(from_source.begin(), from_source.end(), by_order);
+  std::sort(from_target.begin(), from_target.end(), by_order);
+  // Spacing around each vertex on its own side: to its neighbours, the
+  // chain's ends or pins (a loop wraps around).
+  auto spacing = [&](const std::vector<Loose>& side, const std::vector<double>& fixed) {
+    std::vector<double> all;
+    for (const Loose& l : side) all.push_back(l.order);
+    for (double f : fixed) all.push_back(f);
+    std::sort(all.begin(), all.end());
+    std::vector<double> gap(side.size(), 1.0);
+    for (std::size_t k = 0; k < side.size(); ++k) {
+      const double x = side[k].order;
+      const auto at = std::lower_bound(all.begin(), all.end(), x);
+      double g = 1.0;
+      if (at != all.begin()) g = std::min(g, x - *(at - 1));
+      else if (closed && all.size() > 1) g = std::min(g, x + 1 - all.back());
+      if (at + 1 != all.end()) g = std::min(g, *(at + 1) - x);
+      else if (closed && all.size() > 1) g = std::min(g, all.front() + 1 - x);
+      gap[k] = g;
+    }
+    return gap;
+  };
+  std::vector<double> fixed;
+  if (!closed) fixed = {0.0, 1.0};
+  for (const Item& item : items) fixed.push_back(item.order);
+  const std::vector<double> s_gap = spacing(from_source, fixed), t_gap = spacing(from_target, fixed);
+  std::vector<int> partner(from_source.size(), -1);
+  std::vector<char> t_taken(from_target.size(), 0);
+  for (std::size_t k = 0; k < from_source.size(); ++k) {
+    const double x = from_source[k].order;
+    auto at = std::lower_bound(from_target.begin(), from_target.end(), Loose{x, 0}, by_order);
+    for (auto candidate : {at, at == from_target.begin() ? from_target.end() : at - 1}) {
+      if (candidate == from_target.end()) continue;
+      const std::size_t j = std::size_t(candidate - from_target.begin());
+      if (t_taken[j] || std::abs(candidate->order - x) >= kMergeShare * std::min(s_gap[k], t_gap[j])) continue;
+      partner[k] = int(j);
+      t_taken[j] = 1;
+      break;
+    }
+  }
+  for (std::size_t k = 0; k < from_source.size(); ++k) {
+    const std::size_t slot = from_source[k].slot;
+    const double u = vertex_parameter(s, slot);
+    Item item{from_source[k].order, {s.vertices[slot], u}, {}};
+    if (partner[k] >= 0) {
+      const std::size_t ts = from_target[std::size_t(partner[k])].slot;
+      item.target = {t.vertices[ts], vertex_parameter(t, ts)};
+    } else {
+      item.target = {-1, run_parameter(match.map.to_target(u), match.reversed)};
+    }
+    items.push_back(item);
+  }
+  for (std::size_t j = 0; j < from_target.size(); ++j) {
+    if (t_taken[j]) continue;
+    const std::size_t ts = from_target[j].slot;
+    const double w = vertex_parameter(t, ts);
+    const double u = match.map.to_source(run_parameter(w, match.reversed));
+    items.push_back({from_target[j].order, {-1, u}, {t.vertices[ts], w}});
+  }
+  std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.order < b.order; });
+  return items;
+}
+
+/// Where a place lies in the figure: its vertex, or a dummy on an edge.
+MatchedPlace matched_place(const StickFigure& figure, const Track& track, const Place& place, Vec2& position) {
+  MatchedPlace result;
+  if (place.vertex >= 0) {
+    result.vertex = place.vertex;
+    position = figure.vertices[std::size_t(place.vertex)];
+    return result;
+  }
+  auto [k, f] = locate(track, place.p);
+  const int a = track.vertices[k];
+  const int edge = track.edges[k];
+  // Reported along edges[edge] as listed.
+  const bool along = figure.edges[std::size_t(edge)][0] == a;
+  result.edge = edge;
+  result.fraction = along ? f : 1.0 - f;
+  const Edge& e = figure.edges[std::size_t(edge)];
+  position = point_on(figure.vertices[std::size_t(e[0])], figure.vertices[std::size_t(e[1])], result.fraction);
+  return result;
+}
+
+double milliseconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+CorrespondenceMode parse_correspondence_mode(const std::string& name) {
+  if (name == "index") return CorrespondenceMode::ByIndex;
+  if (name == "auto") return CorrespondenceMode::Auto;
+  throw InvalidArgumentError("unknown correspondence '" + name + "' (choose index or auto)");
+}
+
+std::string correspondence_mode_name(CorrespondenceMode mode) {
+  return mode == CorrespondenceMode::Auto ? "auto" : "index";
+}
+
+VertexPin parse_vertex_pin(const std::string& text) {
+  const std::size_t colon = text.find(':');
+  auto whole = [](const std::string& part, int& value) {
+    if (part.empty() || part.size() > 9) return false;
+    for (char c : part)
+      if (c < '0' || c > '9') return false;
+    value = std::stoi(part);
+    return true;
+  };
+  VertexPin pin;
+  if (colon == std::string::npos || !whole(text.substr(0, colon), pin.source) ||
+      !whole(text.substr(colon + 1), pin.target))
+    throw InvalidArgumentError("a pin is SOURCE:TARGET, two vertex indices such as 3:7, got '" + text + "'");
+  return pin;
+}
+
+FigureCorrespondence correspond_figures(const StickFigure& source, const StickFigure& target,
+                                        const CorrespondenceOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const Skeleton s = make_skeleton(source);
+  const Skeleton t = make_skeleton(target);
+  std::vector<std::pair<int, int>> node_pins;
+  std::vector<PinPlace> chain_pins;
+  classify_pins(s, t, options.pins, node_pins, chain_pins);
+  compare_invariants(s, t);
+
+  FigureCorrespondence result;
+  result.skeleton_nodes = int(s.nodes.size());
+  result.skeleton_chains = int(s.chains.size());
+  Candidate chosen;
+  if (source.edges.empty()) {
+    // Two single vertices (compare_invariants): they match.
+    chosen.node_image = {0};
+    result.candidates = 1;
+  } else if (s.is_loop()) {
+    chosen = match_loops(s, t, chain_pins, result.candidates);
+  } else {
+    Search search = search_isomorphisms(s, t, node_pins, chain_pins, true);
+    if (search.candidates.empty()) {
+      if (!search.any_isomorphism) {
+        // Reflected, would the skeletons match? Then say so.
+        StickFigure mirrored = target;
+        for (Vec2& p : mirrored.vertices) p[0] = -p[0];
+        const Skeleton m = make_skeleton(mirrored);
+        if (search_isomorphisms(s, m, {}, {}, false).any_exterior)
+          throw IncompatibleFiguresError(Incompatibility::MirrorImage,
+                                         "correspond: the target is a mirror image of the source: its junctions "
+                                         "see their strokes in the reverse order, and a morph cannot reflect");
+        topology_differs("the strokes meet in another arrangement (no matching of the junctions keeps the "
+                         "counter-clockwise order of the strokes around every junction)");
+      }
+      if (!search.any_exterior)
+        throw IncompatibleFiguresError(Incompatibility::ExteriorDiffers,
+                                       "correspond: the figures match only with another face outside (the source's "
+                                       "outer boundary would become an inner one)");
+      throw IncompatibleFiguresError(Incompatibility::PinsUnsatisfiable,
+                                     "correspond: no matching respects every pin (the best one breaks a pin: " +
+                                         search.pin_conflict + ")");
+    }
+    result.candidates = int(search.candidates.size());
+    chosen = std::move(search.candidates[best_candidate(search.candidates)]);
+  }
+  result.residual = chosen.fit.residual;
+  result.rotation_degrees = chosen.fit.rotation * 180.0 / kPi;
+
+  // The matched vertices: the source's first, then dummies for the
+  // target's vertices that have no source partner, in target order.
+  const int ns = int(source.vertices.size()), nt = int(target.vertices.size());
+  std::vector<int> target_partner(std::size_t(ns), -1);   // source vertex -> target vertex or -1
+  std::vector<int> matched_of_target(std::size_t(nt), -1);
+  std::vector<Vec2> source_positions = source.vertices;
+  std::vector<Vec2> target_positions(static_cast<std::size_t>(ns));
+  result.source_places.resize(std::size_t(ns));
+  result.target_places.resize(std::size_t(ns));
+  for (int v = 0; v < ns; ++v) result.source_places[std::size_t(v)].vertex = v;
+  for (int v = 0; v < ns; ++v)
+    if (chosen.node_image[std::size_t(v)] >= 0) {
+      const int image = chosen.node_image[std::size_t(v)];
+      target_partner[std::size_t(v)] = image;
+      result.target_places[std::size_t(v)].vertex = image;
+      target_positions[std::size_t(v)] = target.vertices[std::size_t(image)];
+      matched_of_target[std::size_t(image)] = v;
+    }
+  std::vector<std::pair<int, int>> all_pins;
+  for (const VertexPin& pin : options.pins) all_pins.emplace_back(pin.source, pin.target);
+
+  struct PendingDummy {  // a target vertex with no source partner
+    int target_vertex;
+    MatchedPlace source_place;
+    Vec2 source_position;
+  };
+  std::vector<PendingDummy> dummies;
+  // Edges as (matched vertex, matched vertex) with the target vertex of a
+  // dummy standing in until the dummies are numbered (encoded as -1 - t).
+  std::vector<std::array<int, 2>> chain_edges;
+  for (const ChainMatch& match : chosen.chains) {
+    const Track& st = s.chains[std::size_t(match.source_chain)];
+    const Track& tt = t.chains[std::size_t(match.target_chain)];
+    const std::vector<Item> items = resample(st, tt, match, all_pins);
+    std::vector<int> sequence;
+    if (!st.closed) sequence.push_back(st.vertices.front());
+    for (const Item& item : items) {
+      if (item.source.vertex >= 0) {
+        const int v = item.source.vertex;
+        Vec2 position;
+        result.target_places[std::size_t(v)] = matched_place(target, tt, item.target, position);
+        target_positions[std::size_t(v)] = position;
+        if (item.target.vertex >= 0) {
+          target_partner[std::size_t(v)] = item.target.vertex;
+          matched_of_target[std::size_t(item.target.vertex)] = v;
+        }
+        sequence.push_back(v);
+      } else {
+        PendingDummy dummy{item.target.vertex, {}, {}};
+        dummy.source_place = matched_place(source, st, item.source, dummy.source_position);
+        dummies.push_back(dummy);
+        sequence.push_back(-1 - item.target.vertex);
+      }
+    }
+    if (!st.closed) sequence.push_back(st.vertices.back());
+    const std::size_t count = st.closed ? sequence.size() : sequence.size() - 1;
+    for (std::size_t k = 0; k < count; ++k) chain_edges.push_back({sequence[k], sequence[(k + 1) % sequence.size()]});
+  }
+  // Dummies numbered in target order after the source's vertices.
+  std::sort(dummies.begin(), dummies.end(),
+            [](const PendingDummy& a, const PendingDummy& b) { return a.target_vertex < b.target_vertex; });
+  for (const PendingDummy& dummy : dummies) {
+    const int index = int(source_positions.size());
+    matched_of_target[std::size_t(dummy.target_vertex)] = index;
+    source_positions.push_back(dummy.source_position);
+    target_positions.push_back(target.vertices[std::size_t(dummy.target_vertex)]);
+    result.source_places.push_back(dummy.source_place);
+    MatchedPlace place;
+    place.vertex = dummy.target_vertex;
+    result.target_places.push_back(place);
+  }
+  for (int v = 0; v < nt; ++v)
+    if (matched_of_target[std::size_t(v)] < 0)
+      throw InternalError("correspond: target vertex " + std::to_string(v) + " was left unmatched");
+  auto resolve = [&](int code) { return code >= 0 ? code : matched_of_target[std::size_t(-1 - code)]; };
+  std::vector<std::array<std::int64_t, 2>> edges;
+  edges.reserve(chain_edges.size());
+  for (const auto& [a, b] : chain_edges) edges.push_back({resolve(a), resolve(b)});
+
+  // The matched figures, validated like any input; then the proof that the
+  // pair is compatible (section 2.1), which the construction promises.
+  try {
+    result.source = make_stick_figure(std::move(source_positions), edges, source.name);
+    result.target = make_stick_figure(std::move(target_positions), edges, target.name);
+  } catch (const InvalidFigureError& error) {
+    throw InternalError(std::string("correspond: the matched figure is not a valid figure (a dummy vertex lost to "
+                                    "rounding on a nearly degenerate figure?): ") +
+                        error.what());
+  }
+  const CompatibilityReport report = check_compatibility(result.source, result.target);
+  if (!report.compatible())
+    throw InternalError("correspond: the matched figures are not compatible: " + report.reason);
+  result.milliseconds = milliseconds_since(start);
+  return result;
+}
+
+bool is_valid(const FigureCorrespondence& c, const StickFigure& source, const StickFigure& target) {
+  const std::size_t m = c.source.vertices.size();
+  if (c.target.vertices.size() != m || c.source_places.size() != m || c.target_places.size() != m) return false;
+  if (c.source.edges != c.target.edges || !is_valid(c.source) || !is_valid(c.target)) return false;
+  auto check_side = [&](const StickFigure& figure, const StickFigure& matched, const std::vector<MatchedPlace>& places) {
+    std::vector<int> seen(figure.vertices.size(), 0);
+    for (std::size_t i = 0; i < m; ++i) {
+      const MatchedPlace& place = places[i];
+      if (place.vertex >= 0) {
+        if (place.vertex >= int(figure.vertices.size()) || seen[std::size_t(place.vertex)]++) return false;
+        if (matched.vertices[i] != figure.vertices[std::size_t(place.vertex)]) return false;
+        continue;
+      }
+      if (place.edge < 0 || place.edge >= int(figure.edges.size())) return false;
+      if (!(place.fraction > 0 && place.fraction < 1)) return false;
+      const Edge& e = figure.edges[std::size_t(place.edge)];
+      if (matched.vertices[i] != point_on(figure.vertices[std::size_t(e[0])], figure.vertices[std::size_t(e[1])],
+                                          place.fraction))
+        return false;
+    }
+    if (std::find(seen.begin(), seen.end(), 0) != seen.end()) return false;
+    // Every matched edge on one original edge: its ends are that edge's
+    // vertices or dummies on it, and the original edges are covered once.
+    std::vector<double> covered(figure.edges.size(), 0.0);
+    for (const Edge& me : matched.edges) {
+      const MatchedPlace& a = places[std::size_t(me[0])];
+      const MatchedPlace& b = places[std::size_t(me[1])];
+      int edge = a.vertex < 0 ? a.edge : b.vertex < 0 ? b.edge : -1;
+      if (edge < 0) {
+        edge = find_edge(figure, a.vertex, b.vertex);
+        if (edge < 0) return false;
+      }
+      const Edge& e = figure.edges[std::size_t(edge)];
+      auto along = [&](const MatchedPlace& p) -> double {
+        if (p.vertex < 0) return p.edge == edge ? p.fraction : -1.0;
+        return p.vertex == e[0] ? 0.0 : p.vertex == e[1] ? 1.0 : -1.0;
+      };
+      const double fa = along(a), fb = along(b);
+      if (fa < 0 || fb < 0 || fa == fb) return false;
+      covered[std::size_t(edge)] += std::abs(fb - fa);
+    }
+    for (double share : covered)
+      if (std::abs(share - 1.0) > 1e-9) return false;
+    return true;
+  };
+  return check_side(source, c.source, c.source_places) && check_side(target, c.target, c.target_places);
+}
+
+}  // namespace stickmorph
