@@ -108,7 +108,9 @@ struct Matching {
   std::vector<VertexPin> pins;
 };
 
-Matching matching_options(const ParsedArguments& arguments, std::string_view command);
+// `correspond` always matches: it passes Auto as the mode.
+Matching matching_options(const ParsedArguments& arguments, std::string_view command,
+                          CorrespondenceMode mode = CorrespondenceMode::ByIndex);
 
 int run_check(const ParsedArguments& arguments) {
   const Matching matching = matching_options(arguments, "check");
@@ -153,8 +155,9 @@ const std::string& required_option(const ParsedArguments& arguments, std::string
   return *value;
 }
 
-Matching matching_options(const ParsedArguments& arguments, std::string_view command) {
+Matching matching_options(const ParsedArguments& arguments, std::string_view command, CorrespondenceMode mode) {
   Matching matching;
+  matching.mode = mode;
   if (const std::string* name = option_value(arguments, "--correspond"))
     matching.mode = parse_correspondence_mode(*name);
   if (const auto pins = arguments.repeated.find("--pin"); pins != arguments.repeated.end())
@@ -328,7 +331,7 @@ int run_morph(const ParsedArguments& arguments) {
 int run_correspond(const ParsedArguments& arguments) {
   const std::string& output = required_option(arguments, "correspond", "--output");
   cli::check_output_path("--output", output);
-  Matching matching = matching_options(arguments, "correspond");
+  Matching matching = matching_options(arguments, "correspond", CorrespondenceMode::Auto);
   const StickFigure source = read_figure_file(arguments.positional[0]);
   const StickFigure target = read_figure_file(arguments.positional[1]);
   CorrespondenceOptions options;
