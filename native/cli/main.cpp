@@ -380,18 +380,6 @@ const std::vector<CommandSpec>& commands() {
        "\"compatible\" (exit 0) or \"incompatible: <reason naming vertices>\" (exit 1).\n"
        "With --correspond auto: whether the figures can be matched (see correspond).",
        &run_check},
-      {"correspond",
-       {"SOURCE.json", "TARGET.json"},
-       {{"--output", "-o", "OUT.json", "where to write the matched figures (required)"},
-        {"--pin", "", "S:T", kPinHelp, true}},
-       "match two stick figures drawn separately",
-       "Matches two figures that need not correspond by index (other vertex counts,\n"
-       "numbering or subdivision): their junctions and ends as plane maps, their\n"
-       "strokes by arc length, with dummy vertices where a vertex has no partner\n"
-       "(Surazhsky & Gotsman 2001, section 6). Writes the matched figure on the\n"
-       "source and on the target drawing and the \"correspondence\" of morph\n"
-       "--correspond auto.",
-       &run_correspond},
       {"triangulate",
        {"SOURCE.json", "TARGET.json"},
        {{"--output", "-o", "OUT.json", "where to write the triangulation object (required)"},
@@ -437,6 +425,18 @@ const std::vector<CommandSpec>& commands() {
        "command fails naming it. With --method linear the vertices move on straight\n"
        "lines and the frames that self-intersect are listed in stats.invalid_frames.",
        &run_morph},
+      {"correspond",
+       {"SOURCE.json", "TARGET.json"},
+       {{"--output", "-o", "OUT.json", "where to write the matched figures (required)"},
+        {"--pin", "", "S:T", kPinHelp, true}},
+       "match two stick figures drawn separately",
+       "Matches two figures that need not correspond by index (other vertex counts,\n"
+       "numbering or subdivision): their junctions and ends as plane maps, their\n"
+       "strokes by arc length, with dummy vertices where a vertex has no partner\n"
+       "(Surazhsky & Gotsman 2001, section 6). Writes the matched figure on the\n"
+       "source and on the target drawing and the \"correspondence\" of morph\n"
+       "--correspond auto.",
+       &run_correspond},
   };
   return table;
 }
