@@ -222,9 +222,9 @@ void check_morph_options(const MorphStickFiguresOptions& options) {
   if (options.enclosure_sides) check_enclosure_sides(*options.enclosure_sides, options.spelling);
   if (options.turns) check_turns(*options.turns, options.spelling);
   if (!options.pins.empty() && options.correspond != CorrespondenceMode::Auto)
-    throw InvalidArgumentError(describe_option(Option::Pins, options.spelling) + " needs " +
-                               (options.spelling == OptionSpelling::CommandLine ? "--correspond auto"
-                                                                                : "correspond='auto'") +
+    throw InvalidArgumentError(describe_option(Option::Pins, options.spelling) +
+                               (options.spelling == OptionSpelling::CommandLine ? " needs --correspond auto"
+                                                                                : " need correspond='auto'") +
                                " (with the index correspondence every vertex is already paired)");
 }
 

@@ -187,6 +187,23 @@ TEST_CASE("morph_stick_figures refuses incompatible figures with every method") 
   }
 }
 
+TEST_CASE("check_morph_options refuses pins without correspond = Auto, in the caller's spelling") {
+  MorphStickFiguresOptions options;
+  options.pins = {{0, 0}};
+  CHECK(refusal(options) ==
+        "pins need correspond='auto' (with the index correspondence every vertex is already paired)");
+  options.spelling = OptionSpelling::CommandLine;
+  CHECK(refusal(options) ==
+        "option --pin needs --correspond auto (with the index correspondence every vertex is already paired)");
+  options.correspond = CorrespondenceMode::Auto;
+  CHECK(refusal(options).empty());
+  // prepare_rigid_morph builds a solver for one corresponding pair: it
+  // takes the matched pair, never the matching.
+  const StickFigure dot = make_stick_figure({{0, 0}}, {});
+  CHECK_THROWS_WITH(prepare_rigid_morph(dot, dot, options),
+                    stickmorph_test::Contains("match them with correspond_figures first"));
+}
+
 TEST_CASE("check_morph_options refuses what the linear method would ignore, in the caller's spelling") {
   MorphStickFiguresOptions linear;
   linear.method = MorphMethod::Linear;
@@ -262,7 +279,10 @@ TEST_CASE("the option-name table names every option once") {
     CHECK(seen.insert(int(row.option)).second);
     CHECK(keywords.insert(row.keyword).second);
   }
-  CHECK(seen.size() == std::size_t(Option::Easing) + 1);
+  CHECK(seen.size() == std::size_t(Option::Pins) + 1);
+  CHECK(describe_option(Option::Correspond, OptionSpelling::CommandLine) == "option --correspond");
+  CHECK(describe_option(Option::Pins, OptionSpelling::CommandLine) == "option --pin");
+  CHECK(describe_option(Option::Pins, OptionSpelling::Keyword) == "pins");
   CHECK(describe_option(Option::Rotation, OptionSpelling::CommandLine) == "option --rotation");
   CHECK(describe_option(Option::Turns, OptionSpelling::Keyword) == "turns");
   CHECK(describe_option(Option::Easing, OptionSpelling::CommandLine) == "option --easing");
