@@ -721,13 +721,27 @@ std::vector<Item> resample(const Track& s, const Track& t, const ChainMatch& mat
   const std::vector<double> s_gap = spacing(from_source, fixed), t_gap = spacing(from_target, fixed);
   std::vector<int> partner(from_source.size(), -1);
   std::vector<char> t_taken(from_target.size(), 0);
-  for (std::size_t k = 0; k < from_source.size(); ++k) {
+  // The nearest target vertices on either side of each source vertex; on a
+  // loop the sides wrap round the seam at the first anchor, where a vertex
+  // just before the seam and one just after are neighbours.
+  auto separation = [&](double a, double b) {
+    const double d = std::abs(a - b);
+    return closed ? std::min(d, 1.0 - d) : d;
+  };
+  for (std::size_t k = 0; k < from_source.size() && !from_target.empty(); ++k) {
     const double x = from_source[k].order;
-    auto at = std::lower_bound(from_target.begin(), from_target.end(), Loose{x, 0}, by_order);
-    for (auto candidate : {at, at == from_target.begin() ? from_target.end() : at - 1}) {
-      if (candidate == from_target.end()) continue;
-      const std::size_t j = std::size_t(candidate - from_target.begin());
-      if (t_taken[j] || std::abs(candidate->order - x) >= kMergeShare * std::min(s_gap[k], t_gap[j])) continue;
+    const std::size_t at =
+        std::size_t(std::lower_bound(from_target.begin(), from_target.end(), Loose{x, 0}, by_order) -
+                    from_target.begin());
+    std::vector<std::size_t> sides;
+    if (at < from_target.size()) sides.push_back(at);
+    else if (closed) sides.push_back(0);
+    if (at > 0) sides.push_back(at - 1);
+    else if (closed) sides.push_back(from_target.size() - 1);
+    for (const std::size_t j : sides) {
+      if (t_taken[j] ||
+          separation(from_target[j].order, x) >= kMergeShare * std::min(s_gap[k], t_gap[j]))
+        continue;
       partner[k] = int(j);
       t_taken[j] = 1;
       break;
