@@ -1,7 +1,8 @@
 """What the add-on needs before numpy and the native module are known to load.
 
 The property definitions (preferences.py) need the limits and the defaults
-(BakeSettings) and every module needs the error type; they live here,
+(BakeSettings), every module needs the error type, and the panel and the pin
+operators need the pin groups' naming rule (is_pin_group); they live here,
 importing nothing but the standard library, so that the add-on registers, and
 its panel can say what is missing, in a Blender whose Python lacks numpy or
 cannot load the bundled module. core.py re-exports all of these.
@@ -34,6 +35,38 @@ ENGINE_LIMITS = {
     "max_turns": 100,
     "max_coordinate_magnitude": 1e100,
 }
+
+
+# A pin is a vertex group of this name prefix (any case) in both meshes,
+# holding one vertex in each: those two vertices must match (core.read_pins).
+# Here, not in core, because the panel counts pins and Pin Selected Vertices
+# names them without numpy or the module.
+PIN_PREFIX = "pin"
+
+
+def is_pin_group(name: str) -> bool:
+    """Whether a vertex group of this name is a pin ("pin.001", "Pin_hand", "PIN")."""
+    return name[:len(PIN_PREFIX)].lower() == PIN_PREFIX
+
+
+def next_pin_name(*taken) -> str:
+    """The first of "pin.001", "pin.002", ... that is none of the names in the
+    given collections (the vertex group names of both meshes), so that one new
+    group of that name can be added to each."""
+    used = set().union(*map(set, taken))
+    k = 1
+    while f"{PIN_PREFIX}.{k:03d}" in used:
+        k += 1
+    return f"{PIN_PREFIX}.{k:03d}"
+
+
+def pin_names(source_names, target_names) -> tuple[list, list, list]:
+    """(in both, only in the first, only in the second): the pin group names
+    of two meshes' vertex group names, each list sorted. A pin is a group
+    name in both; one in a single mesh is an error when baking (read_pins)."""
+    a = {name for name in source_names if is_pin_group(name)}
+    b = {name for name in target_names if is_pin_group(name)}
+    return sorted(a & b), sorted(a - b), sorted(b - a)
 
 
 class StickMorphError(Exception):
@@ -69,6 +102,11 @@ class BakeSettings:
     weights: str = "mvc"
     enclosure_sides: int = ENGINE_LIMITS["default_enclosure_sides"]
     plane: str = "AUTO"
+    # How vertices of the source find their partners in the target
+    # (core.CORRESPONDENCES): AUTO, by index where that works and matched
+    # otherwise; INDEX, vertex i of one mesh is vertex i of the other; MATCH,
+    # always matched by shape (stickmorph.correspond), pins respected.
+    correspondence: str = "AUTO"
     easing: str = "LINEAR"
     renderable: bool = True
     tube_radius: float = 0.01  # a fraction of the figures' size

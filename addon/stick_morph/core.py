@@ -39,9 +39,14 @@ import numpy as np
 from . import dependencies
 # The settings and the error type live in common.py, which imports without
 # numpy; they are part of core's interface too.
-from .common import BakeSettings, StickMorphError
+from .common import BakeSettings, StickMorphError, is_pin_group, next_pin_name, pin_names  # noqa: F401
 
 PLANES = ("AUTO", "XY", "XZ", "YZ")
+# How the meshes' vertices correspond (settings.correspondence; see
+# choose_correspondence): AUTO, by index when that works, else matched;
+# INDEX, vertex i of one mesh is vertex i of the other; MATCH, always
+# matched by shape (stickmorph.correspond).
+CORRESPONDENCES = ("AUTO", "INDEX", "MATCH")
 EASINGS = ("LINEAR", "EASE_IN_OUT")
 # The add-on's motion modes and rotation directions; the engine's names
 # (stickmorph.METHOD_NAMES, ROTATION_NAMES) are these in lower case.
@@ -81,19 +86,50 @@ class Plane:
         return f"the best-fit plane (normal {n[0]:.3f}, {n[1]:.3f}, {n[2]:.3f})"
 
 
+@dataclass(frozen=True)
+class Pin:
+    """Two vertices that must match: a pin group of both meshes (read_pins)."""
+
+    name: str  # the vertex group's name, the same in both meshes
+    source: int  # the one vertex of the group in the source mesh
+    target: int  # and in the target mesh
+
+
+@dataclass
+class Matching:
+    """How the figure the engine morphs was made from the two meshes.
+
+    By index it is the source mesh itself. Matched, it is
+    stickmorph.correspond's figure on m vertices: the source mesh's vertices
+    in order, then dummies on its edges for target vertices without a
+    partner, each vertex with its place on both drawings."""
+
+    matched: bool  # False: by index
+    why: str  # why the bake matched ("the vertex counts differ", ...); "" when the setting said so
+    source_vertex: np.ndarray  # (m,) the source mesh's vertex each vertex of the figure is, -1 a dummy
+    target_vertex: np.ndarray  # (m,) the same in the target mesh
+    source_count: int  # the meshes' own vertex counts
+    target_count: int
+    pins: tuple = ()  # the Pins the matching respected
+    stats: dict = field(default_factory=dict)  # stickmorph.correspond's "stats"; {} by index
+
+
 @dataclass
 class PreparedPair:
-    """Two figures ready for the engine."""
+    """Two figures ready for the engine: the figure to morph, on its m
+    vertices, in the source's and the target's pose (by index m is both
+    meshes' vertex count; matched, see Matching)."""
 
     source_name: str  # the objects' names, for the messages
     target_name: str
     plane: Plane
-    source_xy: np.ndarray  # (V, 2) float64
-    target_xy: np.ndarray  # (V, 2) float64
-    source_h: np.ndarray  # (V,) heights above the plane
-    target_h: np.ndarray  # (V,)
-    edges: np.ndarray  # (E, 2) int64, the source mesh's edges in mesh order
+    source_xy: np.ndarray  # (m, 2) float64
+    target_xy: np.ndarray  # (m, 2) float64
+    source_h: np.ndarray  # (m,) heights above the plane (a dummy's interpolated along its edge)
+    target_h: np.ndarray  # (m,)
+    edges: np.ndarray  # (E, 2) int64: by index the source mesh's edges in mesh order; matched, the matched figure's
     size: float  # diagonal of the common bounding box (world units)
+    matching: Matching  # how the figure was made from the meshes
 
 
 @dataclass
@@ -299,28 +335,50 @@ def ease_sample_indices(frame_count: int, easing: str, motion: str) -> np.ndarra
 
 def prepare_pair(source_world, source_edges, source_faces: int, source_name: str,
                  target_world, target_edges, target_faces: int, target_name: str,
-                 settings: BakeSettings) -> PreparedPair:
-    """Checks two meshes (world-space vertices, edges, face counts) and projects
-    them onto their common plane (settings.plane, settings.planarity_tolerance).
-    Raises StickMorphError with a user message."""
+                 settings: BakeSettings, source_groups=None, target_groups=None) -> PreparedPair:
+    """Checks two meshes (world-space vertices, edges, face counts, and their
+    vertex groups as {name: [vertex, ...]} for the pins), projects them onto
+    their common plane (settings.plane, settings.planarity_tolerance) and
+    makes the figure to morph: the source mesh itself by index, or the
+    figure stickmorph.correspond matches, as settings.correspondence says
+    (choose_correspondence). Raises StickMorphError with a user message."""
     plane, planarity_tolerance = settings.plane, settings.planarity_tolerance
+    setting = settings.correspondence
+    if setting not in CORRESPONDENCES:
+        raise StickMorphError(f"unknown correspondence {setting!r} (choose one of {', '.join(CORRESPONDENCES)})")
     source_world = np.asarray(source_world, dtype=np.float64).reshape(-1, 3)
     target_world = np.asarray(target_world, dtype=np.float64).reshape(-1, 3)
+    source_edges = np.asarray(source_edges, dtype=np.int64).reshape(-1, 2)
+    target_edges = np.asarray(target_edges, dtype=np.int64).reshape(-1, 2)
+    source_groups, target_groups = dict(source_groups or {}), dict(target_groups or {})
     for name, faces in ((source_name, source_faces), (target_name, target_faces)):
         if faces:
             raise StickMorphError(
                 f"'{name}' has {faces} face{'s' if faces != 1 else ''}; Stick Morph needs "
                 "edge-only meshes (in Edit Mode: Delete > Only Faces)")
-    if len(source_world) != len(target_world):
-        raise StickMorphError(
-            f"different vertex counts: '{source_name}' has {len(source_world)} vertices, "
-            f"'{target_name}' has {len(target_world)}; vertex i of one corresponds to "
-            "vertex i of the other")
-    if len(source_world) == 0:
-        raise StickMorphError(f"'{source_name}' has no vertices")
-    message = compare_edge_sets(source_edges, target_edges, source_name, target_name)
-    if message:
-        raise StickMorphError(message)
+    if setting == "INDEX":
+        # Pins only steer a matching; by index they would silently do
+        # nothing, and a user who made them meant the meshes to be matched.
+        groups = sorted(set(filter(is_pin_group, source_groups)) | set(filter(is_pin_group, target_groups)))
+        if groups:
+            raise StickMorphError(
+                f"pins need Correspondence (Match) Automatic or By Shape: with By Index vertex i of "
+                f"'{source_name}' is vertex i of '{target_name}' and the pin group"
+                f"{'s' if len(groups) > 1 else ''} {_names(groups)} would have no effect "
+                "(Clear Pins removes them)")
+        if len(source_world) != len(target_world):
+            raise StickMorphError(
+                f"different vertex counts: '{source_name}' has {len(source_world)} vertices, "
+                f"'{target_name}' has {len(target_world)}; {_BY_INDEX}")
+    for name, world in ((source_name, source_world), (target_name, target_world)):
+        if len(world) == 0:
+            raise StickMorphError(f"'{name}' has no vertices")
+    if setting == "INDEX":
+        message = compare_edge_sets(source_edges, target_edges, source_name, target_name)
+        if message:
+            raise StickMorphError(f"{message}; {_BY_INDEX}")
+    pins = () if setting == "INDEX" else read_pins(source_groups, target_groups, source_name, target_name)
+    check_pins(pins, source_edges, target_edges, len(source_world), len(target_world), source_name, target_name)
     for name, world in ((source_name, source_world), (target_name, target_world)):
         bad = np.flatnonzero(~np.isfinite(world).all(axis=1))
         if len(bad):
@@ -346,8 +404,247 @@ def prepare_pair(source_world, source_edges, source_faces: int, source_name: str
             f"away from {fitted.describe()} (largest deviation {worst[0]:.6g}; allowed "
             f"{limit:.3g}, {planarity_tolerance:g} of the size {size:.6g})"
             + ("" if plane == "AUTO" else "; try plane AUTO"))
-    edges = np.asarray(source_edges, dtype=np.int64).reshape(-1, 2)
-    return PreparedPair(source_name, target_name, fitted, source_xy, target_xy, source_h, target_h, edges, size)
+
+    index_report = []  # the by-index check's report, when AUTO ran it
+
+    def compatible_by_index():
+        engine = load_engine()
+        try:
+            report = engine.check_compatibility(source_xy, target_xy, source_edges, target_edges)
+        except (engine.StickMorphError, engine.InternalError) as e:
+            # An invalid figure is invalid however it is matched.
+            raise StickMorphError(engine_error_message(e, source_name, target_name)) from e
+        index_report.append(report)
+        return bool(report)
+
+    matched, why = choose_correspondence(
+        setting, len(source_world) == len(target_world),
+        compare_edge_sets(source_edges, target_edges) is None, bool(pins), compatible_by_index)
+    if not matched:
+        # By index: the source's edges are the figure's (the target's are
+        # the same set; the morph checks its compatibility as it starts).
+        count = len(source_world)
+        matching = Matching(False, why, np.arange(count), np.arange(count), count, count)
+        return PreparedPair(source_name, target_name, fitted, source_xy, target_xy, source_h, target_h,
+                            source_edges, size, matching)
+    engine = load_engine()
+    try:
+        result = engine.correspond(source_xy, target_xy, source_edges, target_edges=target_edges,
+                                   pins=[[pin.source, pin.target] for pin in pins] or None)
+    except engine.IncompatibleFiguresError as e:
+        raise StickMorphError(match_error_message(e, source_name, target_name, pins,
+                                                  index_report[0] if index_report else None)) from e
+    except (engine.StickMorphError, engine.InternalError) as e:
+        raise StickMorphError(engine_error_message(e, source_name, target_name)) from e
+    c = result["correspondence"]
+    source_vertex = np.asarray(c["source"], dtype=np.int64)
+    target_vertex = np.asarray(c["target"], dtype=np.int64)
+    matching = Matching(True, why, source_vertex, target_vertex, len(source_world), len(target_world),
+                        tuple(pins), dict(result["stats"]))
+    return PreparedPair(
+        source_name, target_name, fitted,
+        np.asarray(result["source_xy"], dtype=np.float64), np.asarray(result["target_xy"], dtype=np.float64),
+        matched_heights(source_h, source_edges, source_vertex, c["source_edge"], c["source_fraction"]),
+        matched_heights(target_h, target_edges, target_vertex, c["target_edge"], c["target_fraction"]),
+        np.asarray(result["edges"], dtype=np.int64).reshape(-1, 2), size, matching)
+
+
+# Said after a refusal by index: the setting that would accept the pair.
+_BY_INDEX = ("Correspondence (Match) is By Index, where vertex i of one mesh is vertex i of the other: "
+             "Automatic or By Shape matches meshes drawn separately")
+
+
+def _names(names, limit: int = 5) -> str:
+    """'a', 'b' and 3 more: quoted names for a message."""
+    names = list(names)
+    text = ", ".join(f"'{name}'" for name in names[:limit])
+    return text + (f" and {len(names) - limit} more" if len(names) > limit else "")
+
+
+def _vertices(vertices, limit: int = 5) -> str:
+    vertices = list(vertices)
+    text = ", ".join(str(v) for v in vertices[:limit])
+    return text + (f" and {len(vertices) - limit} more" if len(vertices) > limit else "")
+
+
+# ------------------------------------------------------- correspondence ----
+
+def choose_correspondence(setting: str, same_vertex_count: bool, same_edges: bool, pinned: bool,
+                          compatible_by_index) -> tuple[bool, str]:
+    """(matched, why): whether the bake matches the meshes (stickmorph.correspond)
+    or takes them by index, and why it matches when the setting left it open.
+
+    INDEX: by index (prepare_pair has refused meshes that cannot be). MATCH:
+    matched. AUTO: by index when the meshes have the same vertex count and
+    edge set, no pins, and are compatible by index; matched otherwise. Pins
+    say that the vertices are not paired by number, so AUTO matches
+    whenever there are any. compatible_by_index is called (once) only when
+    the answer depends on it: the engine's check costs a pass over the
+    figures."""
+    if setting == "INDEX":
+        return False, ""
+    if setting == "MATCH":
+        return True, ""
+    if setting != "AUTO":
+        raise StickMorphError(f"unknown correspondence {setting!r} (choose one of {', '.join(CORRESPONDENCES)})")
+    if pinned:
+        return True, "pins are given"
+    if not same_vertex_count:
+        return True, "the vertex counts differ"
+    if not same_edges:
+        return True, "the edges differ"
+    if not compatible_by_index():
+        return True, "they are not compatible by index"
+    return False, "compatible by index"
+
+
+def read_pins(source_groups, target_groups, source_name: str = "source",
+              target_name: str = "target") -> tuple:
+    """The Pins of two meshes from their vertex groups ({name: [vertex, ...]},
+    any groups; only those named as pins, common.is_pin_group, count), in
+    order of name. A pin group must be in both meshes under the same name and
+    hold exactly one vertex in each, and a vertex can be in one pin group
+    only; anything else raises StickMorphError naming the group."""
+    both, only_source, only_target = pin_names(source_groups, target_groups)
+    one_sided = ([(n, source_name, target_name) for n in only_source]
+                 + [(n, target_name, source_name) for n in only_target])
+    if one_sided:
+        name, present, missing = one_sided[0]
+        raise StickMorphError(
+            f"the pin group '{name}' is in '{present}' but not in '{missing}': a pin is a vertex group "
+            "of the same name in both meshes, holding one vertex in each (Pin Selected Vertices makes "
+            "them, Clear Pins removes them)")
+    pins = []
+    pinned = ({}, {})  # vertex -> the pin group holding it, per mesh
+    for name in both:
+        ends = []
+        for k, (groups, mesh) in enumerate(((source_groups, source_name), (target_groups, target_name))):
+            members = sorted({int(v) for v in groups[name]})
+            if len(members) != 1:
+                held = ("no vertex" if not members else
+                        f"{len(members)} vertices ({_vertices(members)})")
+                raise StickMorphError(
+                    f"the pin group '{name}' of '{mesh}' holds {held}; a pin group holds exactly one "
+                    "vertex in each mesh")
+            vertex = members[0]
+            if vertex in pinned[k]:
+                raise StickMorphError(
+                    f"vertex {vertex} of '{mesh}' is in two pin groups, '{pinned[k][vertex]}' and '{name}'; "
+                    "a vertex can be pinned only once")
+            pinned[k][vertex] = name
+            ends.append(vertex)
+        pins.append(Pin(name, ends[0], ends[1]))
+    return tuple(pins)
+
+
+def _vertex_kind(degree: int) -> str:
+    if degree == 0:
+        return "a lone vertex"
+    if degree == 1:
+        return "an end"
+    if degree == 2:
+        return "inside a stroke"
+    return f"a junction of degree {degree}"
+
+
+def check_pins(pins, source_edges, target_edges, source_count: int, target_count: int,
+               source_name: str = "source", target_name: str = "target"):
+    """Refuses, naming the pin group, a pin whose vertex is not in its mesh or
+    that joins vertices of different kinds: the matching pairs an end or a
+    junction only with one of the same degree, and a vertex inside a stroke
+    (degree 2) only with another (the engine's rule; checked here so that
+    the message names the group, which the engine does not know)."""
+    if not pins:
+        return
+    degrees = []
+    for edges, count in ((source_edges, source_count), (target_edges, target_count)):
+        edges = np.asarray(edges, dtype=np.int64).reshape(-1, 2)
+        inside = edges[((edges >= 0) & (edges < count)).all(axis=1)]
+        degrees.append(np.bincount(inside.ravel(), minlength=count))
+    for pin in pins:
+        for vertex, count, mesh in ((pin.source, source_count, source_name), (pin.target, target_count, target_name)):
+            if not 0 <= vertex < count:
+                raise StickMorphError(f"the pin group '{pin.name}' names vertex {vertex} of '{mesh}', "
+                                      f"which has {count} vertices")
+        a, b = int(degrees[0][pin.source]), int(degrees[1][pin.target])
+        if a != b:
+            raise StickMorphError(
+                f"the pin '{pin.name}' joins vertex {pin.source} of '{source_name}', {_vertex_kind(a)}, to "
+                f"vertex {pin.target} of '{target_name}', {_vertex_kind(b)}: a pin joins two ends, two "
+                "junctions of the same degree or two vertices inside strokes")
+
+
+def matched_heights(heights, edges, vertex, edge, fraction) -> np.ndarray:
+    """The heights (distance from the plane) of a matched figure's vertices
+    in one mesh: an original vertex's own (vertex[i] >= 0), a dummy's
+    interpolated along the mesh edge it lies on, edges[edge[i]], at
+    fraction[i] from its first vertex to its second (stickmorph.correspond's
+    correspondence arrays for that mesh). Linear along the edge, as the
+    dummy's place in the plane is, so the dummy lies on the mesh's edge in
+    world space too."""
+    heights = np.asarray(heights, dtype=np.float64)
+    edges = np.asarray(edges, dtype=np.int64).reshape(-1, 2)
+    vertex = np.asarray(vertex, dtype=np.int64)
+    edge = np.asarray(edge, dtype=np.int64)
+    fraction = np.asarray(fraction, dtype=np.float64)
+    original = vertex >= 0
+    if not (edge[~original] >= 0).all():
+        raise StickMorphError("internal error: a matched vertex is neither a mesh vertex nor on an edge")
+    out = np.empty(len(vertex))
+    out[original] = heights[vertex[original]]
+    ends = edges[edge[~original]]
+    f = fraction[~original]
+    out[~original] = (1.0 - f) * heights[ends[:, 0]] + f * heights[ends[:, 1]]
+    return out
+
+
+def correspondence_summary(matching: Matching, source_name: str = "source",
+                           target_name: str = "target") -> tuple[str, str]:
+    """(short, long): how the pair was matched, for the panel's last-bake box
+    (about 24 characters) and the bake's report: "By index", or "Matched: 37
+    (12 dummies)" and "matched (the vertex counts differ): 37 vertices, 12
+    dummies (5 on 'A', 7 on 'B'), 2 pins"."""
+    if not matching.matched:
+        return "By index", "by index"
+    stats = matching.stats
+    on_source, on_target = int(stats.get("source_dummies", 0)), int(stats.get("target_dummies", 0))
+    dummies = on_source + on_target
+    count = len(matching.source_vertex)
+    text = f"matched{f' ({matching.why})' if matching.why else ''}: {count} vertices, {dummies} " \
+           f"dumm{'y' if dummies == 1 else 'ies'}"
+    if dummies:
+        text += f" ({on_source} on '{source_name}', {on_target} on '{target_name}')"
+    if matching.pins:
+        text += f", {len(matching.pins)} pin{'s' if len(matching.pins) != 1 else ''}"
+    return f"Matched: {count} ({dummies} dumm{'y' if dummies == 1 else 'ies'})", text
+
+
+def _without_prefix(text: str, prefix: str) -> str:
+    return text[len(prefix):] if text.startswith(prefix) else text
+
+
+def match_error_message(error: Exception, source_name: str, target_name: str, pins=(),
+                        index_report=None) -> str:
+    """A user message for stickmorph.correspond's IncompatibleFiguresError
+    (kind topology_differs, mirror_image, exterior_differs or
+    pins_unsatisfiable). index_report: the by-index check's report when the
+    bake tried that first (Correspondence Automatic), said too."""
+    # The engine prefixes its reason with "correspond: ", the function's
+    # name, which means nothing in Blender.
+    reason = _without_prefix(getattr(error, "reason", None) or str(error), "correspond: ")
+    kind = getattr(error, "kind", None)
+    if kind == "pins_unsatisfiable":
+        listing = "; ".join(f"'{pin.name}': vertex {pin.source} of '{source_name}' to vertex {pin.target} "
+                            f"of '{target_name}'" for pin in pins)
+        text = f"the pins cannot all hold: {reason} (pins {listing})"
+    elif kind == "mirror_image":
+        text = f"cannot match '{source_name}' and '{target_name}': '{target_name}' is a mirror image of " \
+               f"'{source_name}': {reason}"
+    else:
+        text = f"cannot match '{source_name}' and '{target_name}': {reason}"
+    if index_report is not None and not index_report:
+        text += f" (nor are they compatible by index: {_without_prefix(index_report.reason, 'incompatible figures: ')})"
+    return text
 
 
 def _where(vertices) -> str:
@@ -376,8 +673,9 @@ def engine_error_message(error: Exception, source_name: str, target_name: str) -
             return f"the figure is not connected: {text}"
         return f"invalid figure: {text}"
     if isinstance(error, engine.IncompatibleFiguresError):
-        # The morph's own compatibility check, the only one a bake runs: its
-        # exception carries the report (kind, vertices, reason).
+        # The morph's own compatibility check of the pair it is given (a
+        # matched pair passes it): its exception carries the report (kind,
+        # vertices, reason). A matching's refusal is match_error_message's.
         where = _where(error.vertices or [])
         if error.kind == "mirror_image":
             return (f"incompatible figures: '{target_name}' is a mirror image of '{source_name}'"
