@@ -42,6 +42,11 @@ So for a pair the manifest expects to match, this script requires:
 If the optional `source_edge`/`source_fraction` (or target_...) fields are present they
 must agree with where the dummy was found.
 
+Informational, never a failure: when the manifest lists `landmarks` (the intended partners
+of the named junctions and ends of same-figure pairs), the table says how many the engine's
+match kept. A symmetric figure (an X, an H) has several valid matches, and the contract does
+not say which one the engine takes.
+
 For a pair the manifest expects to be refused: exit 2, empty stdout, exactly one stderr line,
 starting with `error: `, not mentioning an internal error, within the timeout. If the CLI
 matches such a pair anyway, its output is checked as above and the verdict says whether that
@@ -603,7 +608,8 @@ def run_pair(entry, corpus, cli, frames, timeout, workdir, max_full_edges):
     for s, t in pins:
         cmd += ["--pin", f"{s}:{t}"]
     row = {"pair": name, "family": entry["family"], "expect": entry["expect"], "n_source": len(source[0]),
-           "n_target": len(target[0]), "m": None, "dummies": None, "frames_checked": "-", "result": "",
+           "n_target": len(target[0]), "m": None, "dummies": None, "frames_checked": "-", "landmarks": "-",
+           "result": "",
            "seconds": None, "check_seconds": None, "problems": [], "command": " ".join(cmd)}
     start = time.monotonic()
     try:
@@ -631,9 +637,22 @@ def run_pair(entry, corpus, cli, frames, timeout, workdir, max_full_edges):
             row["problems"] = ["exit 0 but no output file"]
         else:
             row["problems"] = _check_output(out, source, target, pins, frames, max_full_edges, row)
+            if entry.get("landmarks"):
+                try:
+                    kept = landmarks_kept(json.loads(out.read_text()), [tuple(x) for x in entry["landmarks"]])
+                    row["landmarks"] = f"{kept}/{len(entry['landmarks'])}"
+                except (OSError, ValueError, AttributeError):
+                    pass
     row["check_seconds"] = round(time.monotonic() - start, 2)
     row["result"] = "ok" if not row["problems"] else "FAIL"
     return row
+
+
+def landmarks_kept(doc, landmarks):
+    """How many of the (source, target) landmark pairs are one matched vertex."""
+    corr = doc.get("correspondence", {})
+    pairs = set(zip(corr.get("source", []), corr.get("target", [])))
+    return sum(1 for s, t in landmarks if (s, t) in pairs)
 
 
 def _check_output(out, source, target, pins, frames, max_full_edges, row):
@@ -651,10 +670,11 @@ def _check_output(out, source, target, pins, frames, max_full_edges, row):
 
 
 def print_table(rows, stream=sys.stdout):
-    head = ["pair", "family", "n_source", "n_target", "m", "dummies", "frames checked", "result", "seconds"]
+    head = ["pair", "family", "n_source", "n_target", "m", "dummies", "frames checked", "landmarks", "result",
+            "seconds"]
     body = [[r["pair"], r["family"], str(r["n_source"]), str(r["n_target"]),
              "-" if r["m"] is None else str(r["m"]), "-" if r["dummies"] is None else str(r["dummies"]),
-             r["frames_checked"], r["result"] + ("" if r["expect"] == "match" else " (refuse)"),
+             r["frames_checked"], r.get("landmarks", "-"), r["result"] + ("" if r["expect"] == "match" else " (refuse)"),
              "-" if r["seconds"] is None else f"{r['seconds']:.2f}"] for r in rows]
     widths = [max(len(h), *(len(b[k]) for b in body)) if body else len(h) for k, h in enumerate(head)]
     print("  ".join(h.ljust(w) for h, w in zip(head, widths)), file=stream)
@@ -671,6 +691,13 @@ def print_table(rows, stream=sys.stdout):
     for fam in families:
         mine = [r for r in rows if r["family"] == fam]
         print(f"  {fam}: {sum(r['result'] == 'ok' for r in mine)}/{len(mine)} ok", file=stream)
+    marked = [r for r in rows if r.get("landmarks", "-") != "-"]
+    if marked:
+        whole = [r for r in marked if r["landmarks"].split("/")[0] == r["landmarks"].split("/")[1]]
+        print(f"  landmarks (information): all kept in {len(whole)} of {len(marked)} pairs"
+              + ("" if len(whole) == len(marked) else
+                 " (not kept: " + ", ".join(f"{r['pair']} {r['landmarks']}" for r in marked if r not in whole) + ")"),
+              file=stream)
     print(f"  total: {len(rows) - len(failed)}/{len(rows)} ok, {len(failed)} failed; CLI time "
           f"{sum(r['seconds'] or 0 for r in rows):.1f} s", file=stream)
 

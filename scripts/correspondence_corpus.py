@@ -40,7 +40,9 @@ glyph whose outline fails is skipped.
 
 OUT_DIR gets NAME.source.json / NAME.target.json and manifest.json: a list of {name, family,
 source, target, expect ("match" or "refuse"), why, pins ([[s, t], ...], only when pinned),
-n_source, n_target}. The output is a function of --seed and --count-per-family alone.
+landmarks ([[s, t], ...]: the intended partners of the named junctions and ends, stroke and
+skeleton families only; the contract does not fix which of several valid matches the engine
+takes, so the checker reports them without failing), n_source, n_target}. The output is a function of --seed and --count-per-family alone.
 """
 import argparse
 import json
@@ -458,7 +460,8 @@ def limb(d, start, angles, lengths, spacing, curl, names=None):
 
 def ring(d, at, centre, count, prefix):
     """A closed loop of `count` vertices through vertex `at`, on the circle about `centre`
-    (a head, a palm). Returns its vertices counter-clockwise from `at`."""
+    (a head, a palm). Returns its vertices counter-clockwise from `at`. Their names start with
+    "~": the count depends on the style, so equal names are not the same point of two drawings."""
     c = np.asarray(centre, dtype=float)
     p0 = d.points[at]
     a0 = math.atan2(p0[1] - c[1], p0[0] - c[0])
@@ -486,7 +489,7 @@ def person(st, fingers=(1, 1), mirror=False):
     head_r = 0.12 * (1 + r.uniform(-0.2, 0.2))
     na = math.atan2(*(d.points[neck] - d.points[chest])[::-1])
     centre = d.points[neck] + head_r * np.array([math.cos(na), math.sin(na)])
-    ring(d, neck, centre, max(6, int(2 * math.pi * head_r / sp)), "head")
+    ring(d, neck, centre, max(6, int(2 * math.pi * head_r / sp)), "~head")
     # side "l" is to the left (sign 1): arms at 145..200 degrees, the leg at 240..262
     for side, sign, nf in (("l", 1, fingers[0]), ("r", -1, fingers[1])):
         up = math.radians(90 + sign * r.uniform(55, 110))
@@ -545,7 +548,7 @@ def quadruped(st):
     neck = limb(d, back, [neck_a], [0.28], sp, r.uniform(-cu, cu), ["neck"])
     hr = 0.1 * (1 + r.uniform(-0.2, 0.2))
     centre = d.points[neck] + hr * np.array([math.cos(neck_a), math.sin(neck_a)])
-    ring(d, neck, centre, max(6, int(2 * math.pi * hr / sp)), "head")
+    ring(d, neck, centre, max(6, int(2 * math.pi * hr / sp)), "~head")
     limb(d, hips, [math.radians(r.uniform(150, 200)), math.radians(r.uniform(160, 230))], [0.18, 0.16], sp,
          r.uniform(-cu, cu), ["tail1", "tail2"])
     for at, tag in ((hips, "h"), (back, "f")):
@@ -563,8 +566,8 @@ def hand(st):
     sp, cu = st["spacing"] * 0.6, 0.1 * st["bend"] / 0.12
     d = Drawing()
     count = max(12, int(2 * math.pi * 0.3 / sp))
-    start = d.key("palm0", (0.0, -0.3))
-    idx = ring(d, start, (0.0, 0.0), count, "palm")  # idx[k] at angle -90 + 360 k / count degrees
+    start = d.key("~palm0", (0.0, -0.3))
+    idx = ring(d, start, (0.0, 0.0), count, "~palm")  # idx[k] at angle -90 + 360 k / count degrees
 
     def at(fraction):
         return idx[int(round(fraction * count)) % count]
@@ -622,12 +625,28 @@ def write_figure(path, name, fig):
     path.write_text(json.dumps(doc) + "\n")
 
 
+def landmark_pairs(a, b):
+    """(vertex of a, vertex of b) for every key drawn in both with a degree other than 2: the
+    junctions and ends the drawer meant to be the same (a person's hip, a letter's top-left
+    end). Ring vertices are left out (their names depend on the vertex count)."""
+    def degrees(fig):
+        deg = [0] * len(fig.points)
+        for u, v in fig.edges:
+            deg[u] += 1
+            deg[v] += 1
+        return deg
+    da, db = degrees(a), degrees(b)
+    return [(a.keys[k], b.keys[k]) for k in sorted(a.keys) if not k.startswith("~") and k in b.keys
+            and da[a.keys[k]] != 2 and db[b.keys[k]] != 2]
+
+
 class Corpus:
     def __init__(self, out, rng):
         self.out, self.rng, self.entries = out, rng, []
 
-    def add(self, name, family, src, tgt, expect, why, pins=None):
-        """Disguise and write one pair; pins are (source vertex, target vertex) before disguise."""
+    def add(self, name, family, src, tgt, expect, why, pins=None, landmarks=False):
+        """Disguise and write one pair; pins are (source vertex, target vertex) before disguise.
+        landmarks: record the intended partners of the named nodes (see `landmark_pairs`)."""
         for _ in range(MAX_REDRAWS):
             s, sp = disguise(src, self.rng, move=False)
             t, tp = disguise(tgt, self.rng, move=True)
@@ -641,6 +660,8 @@ class Corpus:
                  "expect": expect, "why": why}
         if pins:
             entry["pins"] = [[sp[a], tp[b]] for a, b in pins]
+        if landmarks:
+            entry["landmarks"] = [[sp[a], tp[b]] for a, b in landmark_pairs(src, tgt)]
         entry["n_source"], entry["n_target"] = len(s.points), len(t.points)
         self.entries.append(entry)
 
@@ -680,7 +701,7 @@ def stroke_family(corpus, count):
             pins = [(a.keys[key], b.keys[key]) for key in PIN_KEYS[letter]]
             why += f"; pinned: {' and '.join(PIN_KEYS[letter])} to themselves"
         name = f"stroke_{k:02d}_{letter if letter.isupper() or letter.isdigit() else letter + '_lower'}"
-        corpus.add(name, "stroke", a, b, "match", why, pins)
+        corpus.add(name, "stroke", a, b, "match", why, pins, landmarks=True)
 
 
 def skeleton_family(corpus, count):
@@ -694,7 +715,7 @@ def skeleton_family(corpus, count):
         why = f"{kind} in two poses and proportions, limbs sampled at other densities"
         if kind == "tree":
             why += f" (branching {shape})"
-        corpus.add(f"skeleton_{k:02d}_{kind}", "skeleton", a, b, "match", why)
+        corpus.add(f"skeleton_{k:02d}_{kind}", "skeleton", a, b, "match", why, landmarks=True)
 
 
 def letter(name):

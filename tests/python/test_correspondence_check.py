@@ -108,6 +108,18 @@ def test_a_reflected_star_has_the_flipped_rotation():
     assert cc.rotation_differences(cc.rotation_system(STAR, STAR_EDGES), rot)
 
 
+def test_rotation_order_all_the_way_round():
+    # five neighbours in every half-plane; turning the figure keeps the cyclic order, which is
+    # the order of the angles
+    angles = [200, 20, 290, 110, 160]
+    expected = [1 + k for k in sorted(range(5), key=lambda k: angles[k])]
+    expected = tuple(expected[expected.index(1):] + expected[:expected.index(1)])
+    edges = [(0, k) for k in range(1, 6)]
+    for turn in range(0, 360, 15):
+        pts = [(0.0, 0.0)] + [(math.cos(math.radians(a + turn)), math.sin(math.radians(a + turn))) for a in angles]
+        assert cc.rotation_system(pts, edges)[0] == expected, turn
+
+
 def test_rotation_order_is_exact_for_nearly_parallel_edges():
     # two neighbours in directions one ulp apart in slope
     pts = [(0.0, 0.0), (1.0, 1.0), (1.0, math.nextafter(1.0, 2.0)), (-1.0, 0.0)]
@@ -209,7 +221,8 @@ def test_dummies_out_of_order_along_the_edge_fail():
     assert check(doc, source=source, target=target) == []
     doc["frames"] = [[[0.0, 0.0], [2.0, 0.0], [1.0, 0.0], [3.0, 0.0]]] + [doc["frames"][1]]
     problems = check(doc, source=source, target=target)
-    assert problems and ("not in order" in problems[0] or "lies on" in problems[0])
+    # found by the subdivision test itself, before frame 0 is found to fold back on itself
+    assert problems and "the dummies [1, 2] on edge 0 (0, 1) are not in order" in problems[0]
 
 
 def test_an_edge_not_covered_fails():
@@ -286,6 +299,11 @@ def test_malformed_outputs_fail():
     assert any("3 frames, 5 asked for" in p for p in check(L_OUTPUT, frames_expected=5))
 
 
+def test_landmarks_kept_counts_matched_pairs():
+    # the L output matches source 0 with target 1 and source 2 with target 0, not source 1 with 2
+    assert cc.landmarks_kept(L_OUTPUT, [(0, 1), (2, 0), (1, 2)]) == 2
+
+
 def test_big_figures_get_a_spread_of_frames():
     assert cc.frames_to_check(50, 10, 300) == list(range(50))
     spread = cc.frames_to_check(50, 1000, 300)
@@ -338,6 +356,15 @@ def test_corpus_is_valid_deterministic_and_disguised(tmp_path):
         differing_counts += len(figs[0][0]) != len(figs[1][0])
         for s, t in e.get("pins", []):
             assert 0 <= s < len(figs[0][0]) and 0 <= t < len(figs[1][0])
+        # landmarks: junctions and ends of the same degree in both drawings, each vertex once
+        if e["family"] in ("stroke", "skeleton"):
+            marks = e["landmarks"]
+            assert len(marks) >= 2  # a 6 has its junction and its end
+            degree = [np.bincount(np.ravel(f[1]), minlength=len(f[0])) for f in figs]
+            assert all(degree[0][s] == degree[1][t] != 2 for s, t in marks), e["name"]
+            assert len({s for s, _ in marks}) == len({t for _, t in marks}) == len(marks)
+        else:
+            assert "landmarks" not in e
         inv = [reduced_invariants(*f) for f in figs]
         if e["expect"] == "match":
             assert inv[0] == inv[1], (e["name"], inv)
