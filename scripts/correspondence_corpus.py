@@ -18,7 +18,7 @@ construction. Families (K pairs each, default 12, so 60 pairs):
   stroke    hand-authored centre-line letters with junctions (A B E F H K P R T X Y 4 6 9 e 8),
             the same letter in two styles: other proportions, slant, bend of the strokes and
             sampling density, so the junctions agree and the chains between them do not.
-            Every third pair pins a junction and a stroke end of the letter.
+            Every third pair pins a junction and one more named point of the letter.
   skeleton  stick people, trees, quadrupeds and hands in two styles/poses (same junctions).
   cross     two different letters or figures with the same junction structure, which must
             match: B->8, A->R, E->F, T->Y, K->H, 6->9, P->9, e->6, and mirror images whose
