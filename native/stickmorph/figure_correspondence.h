@@ -19,12 +19,16 @@
 //      image;
 //   3. among the isomorphisms the one with the least geometric cost wins: the
 //      residual of the best similarity (rotation, scale, translation, never a
-//      reflection) between arc-length samples of the matched chains; near
-//      ties go to the smallest rotation. Two loops are matched by the cyclic
-//      shift of least cost, both run counter-clockwise;
-//   4. every matched chain pair is resampled by arc length (piecewise between
-//      pins): every vertex of either figure is kept, a vertex close to one of
-//      the other figure (under a third of the spacing on both sides) is
+//      reflection) between arc-length samples of the matched chains, plus a
+//      small charge for the rotation so that a nearly symmetric figure does
+//      not spin; near ties go to the smallest rotation. Two loops are matched
+//      by the cyclic shift of least cost, both run counter-clockwise;
+//   4. every matched chain pair is resampled by arc length, piecewise between
+//      anchors: its ends, its pins, and its corners (turns of 40 degrees or
+//      more) matched to corners of the other drawing by an order-keeping
+//      alignment, so that a letter's corners in one font meet its corners in
+//      another. Every vertex of either figure is kept, a vertex close to one
+//      of the other figure (under a third of the spacing on both sides) is
 //      matched to it, and every other vertex gets a dummy partner on the
 //      other figure's edge at the same arc length.
 //
