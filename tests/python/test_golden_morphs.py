@@ -71,6 +71,14 @@ CASES = {
     "letter_a_rigid_ccw_turn_eased": (
         "tests/data/pairs/compatible/letter_a.source.json", "tests/data/pairs/compatible/letter_a.target.json",
         ["--frames", "6", "--rotation", "ccw", "--turns", "1", "--easing", "in-out"]),
+    # Figures drawn separately (issue 13): a W outlined in two fonts (13 and 50 vertices,
+    # renumbered and moved), and a centre-line R drawn in two styles with one junction pinned.
+    "w_two_fonts_correspond": ("tests/data/correspond/w_two_fonts.source.json",
+                               "tests/data/correspond/w_two_fonts.target.json",
+                               ["--frames", "5", "--correspond", "auto"]),
+    "r_two_styles_correspond_pinned": ("tests/data/correspond/r_two_styles.source.json",
+                                       "tests/data/correspond/r_two_styles.target.json",
+                                       ["--frames", "4", "--correspond", "auto", "--pin", "68:41"]),
 }
 
 
