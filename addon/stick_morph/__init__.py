@@ -1,7 +1,9 @@
 """Stick Morph: bake self-intersection-free morphs of planar stick figures.
 
-Select two edge meshes with the same vertices and edges (the target active),
-then Object > Bake Stick Morph or View3D > Sidebar > Stick Morph. The result
+Select two edge meshes (the target active), then Object > Bake Stick Morph
+or View3D > Sidebar > Stick Morph. They may share their vertices and edges
+(vertex i of one is vertex i of the other) or be drawn separately (they are
+matched by shape, steered by pins: vertex groups pin.* in both). The result
 is a new object whose absolute shape keys hold the morph of Surazhsky &
 Gotsman (2001), computed by the bundled native `stickmorph` module.
 

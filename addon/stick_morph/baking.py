@@ -96,6 +96,23 @@ def mesh_world_data(obj, depsgraph=None):
     return world, edges.reshape(-1, 2).astype(np.int64), len(mesh.polygons)
 
 
+def vertex_groups(obj, only=None):
+    """{name: [vertex index, ...]} of a mesh object's vertex groups, for
+    core.read_pins; only(name) picks the groups to read (all without it).
+    Membership, whatever the weight: a vertex assigned with weight 0 is in
+    the group as the Vertex Groups panel's Select shows it. Object Mode data
+    (the bake runs there): in Edit Mode the mesh's groups are stale."""
+    names = {group.index: group.name for group in obj.vertex_groups if only is None or only(group.name)}
+    members = {name: [] for name in names.values()}
+    if names:
+        for vertex in obj.data.vertices:
+            for element in vertex.groups:
+                name = names.get(element.group)
+                if name is not None:
+                    members[name].append(vertex.index)
+    return members
+
+
 # ----------------------------------------------------------------- helpers ----
 
 def find_fcurve(anim_data, data_path):
@@ -282,6 +299,18 @@ def add_tubes(obj, radius):
     return group, created
 
 
+# The result mesh's integer point attributes saying, for a matched pair,
+# which vertex of the source and of the target each of its vertices is (-1:
+# a dummy on that mesh's edge); plain attributes, readable without the add-on.
+SOURCE_VERTEX_ATTRIBUTE = "stick_morph_source_vertex"
+TARGET_VERTEX_ATTRIBUTE = "stick_morph_target_vertex"
+
+
+def _add_vertex_attribute(mesh, name, values):
+    attribute = mesh.attributes.new(name=name, type="INT", domain="POINT")
+    attribute.data.foreach_set("value", np.asarray(values, dtype=np.int32))
+
+
 # ------------------------------------------------------------- the result ----
 
 class Created:
@@ -332,7 +361,11 @@ def build_result(context, source, target, prepared, morph, settings, report_prog
     origin = prepared.plane.origin
     try:
         frames_local = morph.frames_world - origin
+        # The matched figure's m vertices and edges (by index, the source's).
         mesh = _new_mesh(name, frames_local[0], prepared.edges)
+        if prepared.matching.matched:
+            _add_vertex_attribute(mesh, SOURCE_VERTEX_ATTRIBUTE, prepared.matching.source_vertex)
+            _add_vertex_attribute(mesh, TARGET_VERTEX_ATTRIBUTE, prepared.matching.target_vertex)
         obj = bpy.data.objects.new(name, mesh)
         created.objects.append(obj)
         created.names[obj] = name

@@ -1,9 +1,12 @@
-"""The bake operator: object.stick_morph_bake.
+"""The bake operator, object.stick_morph_bake, and the pin operators,
+mesh.stick_morph_pin_selected and object.stick_morph_clear_pins.
 
-All checks (selection, faces, vertex counts, edge sets, planarity, the
-engine's validation and compatibility) and the morph itself run before any
-data is created, so that an error leaves the scene exactly as it was;
-building the result is wrapped so that a failure removes what it created.
+All checks (selection, faces, vertex counts, edge sets, pins, planarity, the
+engine's validation, matching and compatibility) and the morph itself run
+before any data is created, so that an error leaves the scene exactly as it
+was; building the result is wrapped so that a failure removes what it
+created. The pin operators likewise check everything before they change a
+vertex group.
 
 execute depends only on the operator's properties and the file, never on
 state kept from an earlier run, because Adjust Last Operation (and redo)
@@ -22,7 +25,7 @@ import bpy
 from bpy.props import IntProperty, StringProperty
 
 from . import dependencies
-from .common import BakeSettings, StickMorphError
+from .common import BakeSettings, StickMorphError, is_pin_group, next_pin_name
 from .preferences import OPTION_NAMES, addon_preferences, bake_settings, option_properties
 
 PACKAGE_DIR = os.path.dirname(os.path.abspath(__file__))
@@ -218,9 +221,14 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
         depsgraph = baking.evaluated_depsgraph(context)
         source_world, source_edges, source_faces = baking.mesh_world_data(source, depsgraph)
         target_world, target_edges, target_faces = baking.mesh_world_data(target, depsgraph)
+        # The pins: vertex groups named pin* (core.read_pins checks them).
+        source_groups = baking.vertex_groups(source, is_pin_group)
+        target_groups = baking.vertex_groups(target, is_pin_group)
         progress.stage("read", 5)
+        # Checks, then by index or matched (settings.correspondence).
         prepared = core.prepare_pair(source_world, source_edges, source_faces, source.name,
-                                     target_world, target_edges, target_faces, target.name, settings)
+                                     target_world, target_edges, target_faces, target.name, settings,
+                                     source_groups, target_groups)
         progress.stage("check", 15)
         morph = core.compute_morph(prepared, settings)
         progress.stage("morph", 60)
@@ -250,6 +258,7 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
         milliseconds = (time.perf_counter() - started) * 1000.0
         steiner = int(morph.stats.get("steiner_vertices", 0))
         motion_short, motion_text = core.motion_summary(morph, settings.frame_start)
+        match_short, match_text = core.correspondence_summary(prepared.matching, source.name, target.name)
         scene_settings = getattr(context.scene, "stick_morph", None)
         if scene_settings is not None:
             scene_settings.last_result = result.name
@@ -258,8 +267,9 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
             scene_settings.last_frames = count
             scene_settings.last_milliseconds = milliseconds
             scene_settings.last_motion = motion_short
+            scene_settings.last_correspondence = match_short
         text = (f"Stick Morph: '{result.name}': {len(prepared.source_xy)} vertices, "
-                f"{steiner} Steiner vertices, {count} frames, {milliseconds:.0f} ms; {motion_text}")
+                f"{steiner} Steiner vertices, {count} frames, {milliseconds:.0f} ms; {match_text}; {motion_text}")
         if morph.invalid_frames:
             # LINEAR is the baseline, not guaranteed valid: the bake keeps
             # its frames and says which of them are not stick figures
@@ -274,7 +284,127 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
         return {"FINISHED"}
 
 
-classes = (STICKMORPH_OT_bake,)
+# ------------------------------------------------------------------ pins ----
+
+def edited_meshes(context):
+    """The mesh objects in Edit Mode (multi-object editing), in the order
+    Blender lists them."""
+    return [obj for obj in (getattr(context, "objects_in_mode", None) or ()) if obj.type == "MESH"]
+
+
+def _listing(objects):
+    return ", ".join(f"'{obj.name}'" for obj in objects)
+
+
+class STICKMORPH_OT_pin_selected(bpy.types.Operator):
+    """Pin the selected vertex of one mesh to the selected vertex of the other: a new vertex group pin.NNN in both holds it, and a matched bake pairs the two (Edit Mode with both meshes, one vertex selected in each)"""
+    bl_idname = "mesh.stick_morph_pin_selected"
+    bl_label = "Pin Selected Vertices"
+    bl_options = {"REGISTER", "UNDO"}
+
+    @classmethod
+    def poll(cls, context):
+        if context.mode != "EDIT_MESH":
+            cls.poll_message_set("Edit both meshes together (select both, Tab) and select one vertex in each")
+            return False
+        return True
+
+    def execute(self, context):
+        try:
+            text = self._pin(context)
+        except StickMorphError as error:
+            self.report({"ERROR"}, f"Stick Morph: {error}")
+            return {"CANCELLED"}
+        self.report({"INFO"}, f"Stick Morph: {text}")
+        return {"FINISHED"}
+
+    @staticmethod
+    def _pin(context):
+        import bmesh
+
+        objects = edited_meshes(context)
+        if len(objects) != 2:
+            raise StickMorphError(
+                "Pin Selected Vertices needs exactly two meshes in Edit Mode (select both, then Tab); "
+                + (f"{len(objects)} are: {_listing(objects)}" if len(objects) > 1 else
+                   f"only {_listing(objects)} is" if objects else "none is"))
+        if objects[0].data == objects[1].data:
+            raise StickMorphError(f"{_listing(objects)} share the mesh '{objects[0].data.name}': a pin "
+                                  "joins vertices of two different meshes")
+        # Everything is checked before anything changes.
+        chosen = []
+        for obj in objects:
+            mesh = bmesh.from_edit_mesh(obj.data)
+            mesh.verts.index_update()  # the numbers the report and the bake use
+            selected = [vertex for vertex in mesh.verts if vertex.select]
+            if len(selected) != 1:
+                raise StickMorphError(f"select exactly one vertex in each mesh: '{obj.name}' has "
+                                      f"{len(selected)} selected")
+            vertex = selected[0]
+            deform = mesh.verts.layers.deform.active
+            if deform is not None:
+                for index in vertex[deform].keys():
+                    if index < len(obj.vertex_groups) and is_pin_group(obj.vertex_groups[index].name):
+                        raise StickMorphError(
+                            f"vertex {vertex.index} of '{obj.name}' is already pinned by "
+                            f"'{obj.vertex_groups[index].name}' (Clear Pins removes the pins)")
+            chosen.append((obj, vertex.index))
+        # One name free in both meshes: the pin is the name they share.
+        name = next_pin_name(*([group.name for group in obj.vertex_groups] for obj in objects))
+        for obj, index in chosen:
+            group = obj.vertex_groups.new(name=name)
+            mesh = bmesh.from_edit_mesh(obj.data)
+            deform = mesh.verts.layers.deform.verify()
+            # Adding the deform layer (to a mesh without vertex groups)
+            # reallocates the vertices: a BMVert taken before is gone
+            # (measured in 3.4: "BMesh data of type BMVert has been
+            # removed"), so the vertex is looked up by index after it.
+            mesh.verts.ensure_lookup_table()
+            mesh.verts[index][deform][group.index] = 1.0
+            bmesh.update_edit_mesh(obj.data)
+        (a, va), (b, vb) = chosen
+        return f"pinned vertex {va} of '{a.name}' to vertex {vb} of '{b.name}' as '{name}'"
+
+
+def pin_meshes(context):
+    """The meshes Clear Pins works on: the selected mesh objects and those in
+    Edit Mode, each once."""
+    objects = []
+    for obj in list(context.selected_objects) + edited_meshes(context):
+        if obj.type == "MESH" and obj not in objects:
+            objects.append(obj)
+    return objects
+
+
+class STICKMORPH_OT_clear_pins(bpy.types.Operator):
+    """Remove the pins, the vertex groups named pin*, from the selected meshes"""
+    bl_idname = "object.stick_morph_clear_pins"
+    bl_label = "Clear Pins"
+    bl_options = {"REGISTER", "UNDO"}
+
+    @classmethod
+    def poll(cls, context):
+        if not pin_meshes(context):
+            cls.poll_message_set("Select the meshes whose pins to remove")
+            return False
+        return True
+
+    def execute(self, context):
+        objects = pin_meshes(context)
+        removed = 0
+        for obj in objects:
+            for group in [group for group in obj.vertex_groups if is_pin_group(group.name)]:
+                obj.vertex_groups.remove(group)
+                removed += 1
+        if not removed:
+            self.report({"WARNING"}, f"Stick Morph: no pins in {_listing(objects)}")
+            return {"CANCELLED"}
+        self.report({"INFO"}, f"Stick Morph: removed {removed} pin group{'s' if removed != 1 else ''} "
+                              f"from {_listing(objects)}")
+        return {"FINISHED"}
+
+
+classes = (STICKMORPH_OT_bake, STICKMORPH_OT_pin_selected, STICKMORPH_OT_clear_pins)
 
 
 register, unregister = bpy.utils.register_classes_factory(classes)

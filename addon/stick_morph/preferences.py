@@ -18,8 +18,8 @@ from . import common
 # The options copied from the preferences into an operator call (when the
 # caller did not set them) and into the scene settings (Load Defaults): the
 # fields of common.BakeSettings but frame_start, which has no preference.
-OPTION_NAMES = ("motion", "rotation", "turns", "frame_count", "steiner", "weights", "enclosure_sides",
-                "plane", "easing", "renderable", "tube_radius", "show_triangulation",
+OPTION_NAMES = ("motion", "correspondence", "rotation", "turns", "frame_count", "steiner", "weights",
+                "enclosure_sides", "plane", "easing", "renderable", "tube_radius", "show_triangulation",
                 "planarity_tolerance", "set_frame_range")
 
 # The properties' defaults, defined once (common.BakeSettings).
@@ -53,6 +53,21 @@ def option_properties():
                     "Every vertex on a straight line: the simplest motion, but the figure may cross "
                     "itself (the bake warns, naming the frames)")),
             default=defaults.motion, options=set()),
+        "correspondence": EnumProperty(
+            name="Correspondence",
+            description="Which vertex of the target each vertex of the source becomes",
+            # The panel's label is "Match" (ui.py): item names read after it.
+            items=(("AUTO", "Automatic",
+                    "By index when the meshes have the same vertices and edges and are compatible that way; "
+                    "otherwise matched by shape"),
+                   ("INDEX", "By Index",
+                    "Vertex i of the source becomes vertex i of the target: the meshes need the same vertex "
+                    "count and edges (a target made by editing a copy of the source)"),
+                   ("MATCH", "By Shape",
+                    "Matched by shape, for meshes drawn separately: vertex counts, numbering and edges may "
+                    "differ; a vertex without a partner gets one on the other mesh's edge; pins (vertex "
+                    "groups pin.*) are respected")),
+            default=defaults.correspondence, options=set()),
         "rotation": EnumProperty(
             name="Rotation",
             description="Which way the figure turns as a whole on its way to the target "
@@ -170,6 +185,8 @@ class StickMorphSceneSettings(bpy.types.PropertyGroup):
         "last_frames": IntProperty(name="Frames", options=set()),
         # What the motion did (core.motion_summary), e.g. "Rigid guide: 28/28".
         "last_motion": StringProperty(name="Motion", options=set()),
+        # How the pair was matched (core.correspondence_summary), e.g. "By index".
+        "last_correspondence": StringProperty(name="Correspondence", options=set()),
         "last_milliseconds": FloatProperty(name="Milliseconds", options=set()),
     }
 

@@ -1,5 +1,6 @@
-"""The sidebar panel (View3D > Sidebar > Stick Morph) and its Advanced
-sub-panel; the same layout draws the operator's Adjust Last Operation panel.
+"""The sidebar panel (View3D > Sidebar > Stick Morph) and its Pins and
+Advanced sub-panels; the same layout draws the operator's Adjust Last
+Operation panel (without the pins, which are mesh data, not options).
 
 Sized for the sidebar's default width in Blender 3.4 (220 px at scale 1): in
 a property-split row the label column holds about 7 characters, so those rows
@@ -13,7 +14,7 @@ import textwrap
 
 import bpy
 
-from .common import StickMorphError
+from .common import StickMorphError, pin_names
 from .preferences import OPTION_NAMES
 
 # Longest label of a property-split row that 3.4's default sidebar shows in
@@ -29,9 +30,11 @@ FULL_LABEL_CHARS = 22
 
 # (property, label) of the rows: split rows in the main panel and in
 # Advanced, then the full-width rows. Labels None use the property's name.
-# Motion is the headline option: the first row under the pair.
-MAIN_SPLIT = (("motion", "Motion"), ("frame_start", "Start"), ("frame_count", "Frames"), ("plane", "Plane"),
-              ("easing", "Easing"))
+# Motion is the headline option: the first row under the pair. The
+# correspondence is "Match" (Correspondence is too long for the label
+# column); its values read after it: Match Automatic, By Index, By Shape.
+MAIN_SPLIT = (("motion", "Motion"), ("correspondence", "Match"), ("frame_start", "Start"),
+              ("frame_count", "Frames"), ("plane", "Plane"), ("easing", "Easing"))
 MAIN_FULL = (("renderable", None), ("tube_radius", None), ("show_triangulation", None),
              ("set_frame_range", None))
 # "Rotation" (8) and "Extra Turns" are too long for a split row.
@@ -109,6 +112,30 @@ def pair_preview(context, settings):
     return True, [f"Source: {source.name}  \u2192", f"Target: {target.name}"]
 
 
+def pin_preview(context, settings):
+    """(count, text, problems): the pins of the two meshes a bake would use
+    (or, in Edit Mode, of the two meshes being edited), from their vertex
+    group names only (the panel redraws often; the bake reads and checks
+    the groups' vertices, core.read_pins): how many, a line saying so, and
+    what a bake would refuse."""
+    from .operators import edited_meshes, resolve_pair
+    objects = edited_meshes(context)
+    if len(objects) != 2:
+        try:
+            objects = resolve_pair(context, settings.source.name if settings.source else "",
+                                   settings.target.name if settings.target else "")
+        except StickMorphError:
+            return 0, "Pins join vertices of two meshes", []
+    a, b = objects
+    both, only_a, only_b = pin_names([g.name for g in a.vertex_groups], [g.name for g in b.vertex_groups])
+    text = f"{len(both)} pin{'s' if len(both) != 1 else ''}: {', '.join(both)}" if both else "No pins"
+    problems = [f"'{name}' is in '{present.name}', not in '{missing.name}'"
+                for names, present, missing in ((only_a, a, b), (only_b, b, a)) for name in names]
+    if (both or problems) and settings.correspondence == "INDEX":
+        problems.append("Pins need Match Automatic or By Shape")
+    return len(both), text, problems
+
+
 def draw_rows(layout, data, split_rows, full_rows, labelled_rows=()):
     column = layout.column()
     column.use_property_split = True
@@ -170,8 +197,33 @@ class VIEW3D_PT_stick_morph(bpy.types.Panel):
             column.label(text=f"Last: {settings.last_result}")
             column.label(text=f"{settings.last_vertices} vertices, {settings.last_steiner} Steiner")
             column.label(text=f"{settings.last_frames} frames, {settings.last_milliseconds:.0f} ms")
+            if settings.last_correspondence:
+                column.label(text=settings.last_correspondence)
             if settings.last_motion:
                 column.label(text=settings.last_motion)
+
+
+class VIEW3D_PT_stick_morph_pins(bpy.types.Panel):
+    """Pins: vertex groups pin.* in both meshes that a matched bake pairs"""
+    bl_label = "Pins"
+    bl_idname = "VIEW3D_PT_stick_morph_pins"
+    bl_space_type = "VIEW_3D"
+    bl_region_type = "UI"
+    bl_category = "Stick Morph"
+    bl_parent_id = "VIEW3D_PT_stick_morph"
+
+    def draw(self, context):
+        layout = self.layout
+        _, text, problems = pin_preview(context, context.scene.stick_morph)
+        _label_lines(layout, context, text, icon="PINNED")
+        if problems:
+            column = layout.column(align=True)
+            column.alert = True
+            for problem in problems:
+                _label_lines(column, context, problem, icon="ERROR")
+        column = layout.column(align=True)
+        column.operator("mesh.stick_morph_pin_selected", icon="PINNED")
+        column.operator("object.stick_morph_clear_pins", icon="UNPINNED")
 
 
 class VIEW3D_PT_stick_morph_advanced(bpy.types.Panel):
@@ -203,7 +255,7 @@ def draw_operator(layout, op):
     draw_rows(layout, op, ADVANCED_SPLIT, ADVANCED_FULL, ADVANCED_LABELLED)
 
 
-classes = (VIEW3D_PT_stick_morph, VIEW3D_PT_stick_morph_advanced)
+classes = (VIEW3D_PT_stick_morph, VIEW3D_PT_stick_morph_pins, VIEW3D_PT_stick_morph_advanced)
 
 
 register, unregister = bpy.utils.register_classes_factory(classes)

@@ -67,8 +67,10 @@ def test_poll_explains_itself(scene, addon):
 
 
 def test_an_incompatible_pair_is_checked_once(scene, addon, monkeypatch):
-    # The morph checks compatibility as it starts and its exception carries
-    # the report (kind, vertices, reason): the bake needs no check of its own.
+    # By index the morph checks compatibility as it starts and its exception
+    # carries the report (kind, vertices, reason): the bake needs no check of
+    # its own. Automatic checks by index once, to choose, and then matches
+    # this pair (the tree's arms pair the other way round).
     engine = addon_import("core").load_engine()
     calls = []
     check = engine.check_compatibility
@@ -78,6 +80,9 @@ def test_an_incompatible_pair_is_checked_once(scene, addon, monkeypatch):
     source = make_mesh_object("Source", source_xy, edges)
     target = make_mesh_object("Target", np.asarray(target_xy) * [-1.0, 1.0], edges)
     select(source, target)
-    message = bake_fails()
+    message = bake_fails(correspondence="INDEX")
     assert "'Target' is a mirror image of 'Source'" in message and "(vertex " in message, message
     assert calls == []
+    assert bpy.ops.object.stick_morph_bake(frame_count=3) == {"FINISHED"}
+    assert len(calls) == 1
+    assert bpy.context.scene.stick_morph.last_correspondence == "Matched: 7 (0 dummies)"
