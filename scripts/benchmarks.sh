@@ -15,6 +15,8 @@
 # out/benchmarks/ (gitignored):
 #   polygon_pairs.json  stickmorph_benchmark on tests/data/polygon_pairs
 #   morph.jsonl         stickmorph_benchmark_morph on the generated corpus
+#   correspondence.json stickmorph_benchmark_correspondence (issue 13): automatic
+#                       correspondence against size (correspondence.md: its table)
 #   motion_corpus/      scripts/motion_corpus.py: the motion-quality corpus
 #   motion.json         scripts/motion_quality.py on it (issue 12, docs/MOTION.md):
 #                       rigid (if `stickmorph morph --help` lists it),
@@ -77,10 +79,12 @@ if [[ "$build_type" != "Release" ]]; then
   echo "error: $build is configured as '$build_type', not Release; remove it or reconfigure" >&2
   exit 2
 fi
-cmake --build "$build" -j2 --target stickmorph_benchmark stickmorph_benchmark_morph stickmorph
+cmake --build "$build" -j2 --target stickmorph_benchmark stickmorph_benchmark_morph \
+  stickmorph_benchmark_correspondence stickmorph
 
 mkdir -p "$data"
-rm -f "$data/polygon_pairs.json" "$data/morph.jsonl" "$data/motion.json" "$data/run.json"
+rm -f "$data/polygon_pairs.json" "$data/morph.jsonl" "$data/correspondence.json" "$data/motion.json" \
+  "$data/run.json"
 
 echo "==== polygon-pair corpus (tests/data/polygon_pairs) ===="
 "$build/stickmorph_benchmark" --json "$data/polygon_pairs.json" "$source_dir/tests/data/polygon_pairs" \
@@ -90,6 +94,11 @@ echo "==== morph corpus (sizes $sizes, $frames frames; progress below) ===="
 "$build/stickmorph_benchmark_morph" --sizes "$sizes" --frames "$frames" --aronov-max "$aronov_max" \
   --sg2001-max "$sg2001_max" --memory-limit-mib "$memory_limit_mib" --json "$data/morph.jsonl" \
   > "$data/morph.md"
+
+echo "==== correspondence (issue 13: stickmorph_benchmark_correspondence, sizes $sizes; progress below) ===="
+"$build/stickmorph_benchmark_correspondence" --sizes "$sizes" --memory-limit-mib "$memory_limit_mib" \
+  --json "$data/correspondence.json" > "$data/correspondence.md"
+tail -1 "$data/correspondence.md"  # whether the 1000-vertex pairs match in under a second
 
 echo "==== motion quality (issue 12: scripts/motion_corpus.py, scripts/motion_quality.py) ===="
 # The rigid method is measured once the CLI has it: `stickmorph morph --help`
