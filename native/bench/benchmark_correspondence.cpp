@@ -677,7 +677,10 @@ int run(int argc, char** argv) {
     for (std::size_t i = 0; i < options.sizes.size(); ++i) sizes += (i ? "," : "") + std::to_string(options.sizes[i]);
     for (std::size_t i = 0; i < options.families.size(); ++i)
       families += (i ? "," : "") + quote_json_string(options.families[i]);
-    json << "{\"program\":\"stickmorph_benchmark_correspondence\",\"repeat\":" << options.repeat
+    std::string command;
+    for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
+    json << "{\"program\":\"stickmorph_benchmark_correspondence\",\"command\":" << quote_json_string(command)
+         << ",\"repeat\":" << options.repeat
          << ",\"time_limit_s\":" << options.time_limit_s << ",\"memory_limit_mib\":" << options.memory_limit_mib
          << ",\"fit_min_n\":" << kFitMinN << ",\"sizes\":" << sizes << "],\"families\":" << families
          << "],\n\"cases\":[";
