@@ -565,6 +565,43 @@ TEST_CASE("contradictory pins are refused as unsatisfiable", "[correspond_figure
   CHECK(partner(reversed, 3) == 3);
 }
 
+TEST_CASE("a node pin that no matching satisfies is refused as unsatisfiable, whatever the figures",
+          "[correspond_figures]") {
+  // Each pair below is a figure and itself, which match without the pin.
+  //
+  // BUG (figure_correspondence.cpp, search_isomorphisms and its caller):
+  // these fail today. With a node pin the search seeds only at the first
+  // pin's target node, so Search::any_isomorphism and any_exterior (meant to
+  // ignore the pins) come out false when that pin is what no isomorphism
+  // allows, and the caller then blames the figures: the stick man pinned
+  // head to hand is refused as a MirrorImage of himself, the chiral tree
+  // pinned end to end as TopologyDiffers ("another arrangement"), and K4
+  // pinned centre to corner as ExteriorDiffers. Expected PinsUnsatisfiable.
+  struct Case {
+    const char* name;
+    StickFigure figure;
+    std::vector<VertexPin> pins;
+  };
+  const StickFigure k4 = figure({{0, 0}, {4, 0}, {2, 3.5}, {2, 1.2}}, {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}});
+  const std::vector<Case> cases = {
+      {"stick man, head to left hand", kMan, {{2, 4}}},
+      {"chiral tree, the centre's end to an end of the degree-3 junction", chiral_tree(), {{3, 4}}},
+      {"chiral tree, the centre to the degree-3 junction", chiral_tree(), {{0, 1}}},
+      {"K4, the centre to a corner of the outer triangle", k4, {{3, 0}}},
+  };
+  for (const Case& c : cases) {
+    INFO(c.name);
+    REQUIRE_NOTHROW(correspond_figures(c.figure, c.figure));
+    const IncompatibleFiguresError error = incompatible([&] { correspond_figures(c.figure, c.figure, {c.pins}); });
+    CHECK(error.kind() == Incompatibility::PinsUnsatisfiable);
+    CHECK_THAT(std::string(error.what()), Contains("no matching respects every pin"));
+  }
+  // A second node pin that breaks the match is reported right already.
+  const IncompatibleFiguresError second = incompatible([&] { correspond_figures(kMan, kMan, {{{2, 2}, {4, 8}}}); });
+  CHECK(second.kind() == Incompatibility::PinsUnsatisfiable);
+  CHECK_THAT(std::string(second.what()), Contains("it would send source vertex 4 to target vertex 4, not 8"));
+}
+
 TEST_CASE("pins on two loops: kept when in the same counter-clockwise order, refused otherwise",
           "[correspond_figures]") {
   // An octagon: vertices 0..7 counter-clockwise.
