@@ -358,14 +358,12 @@ TEST_CASE("an identical loop, turned, matches with no dummy vertex", "[correspon
   // A star-shaped heptagon with seeded radii, turned by 0.3 rad: every
   // vertex is on both drawings at the same arc length, so m must be 7.
   //
-  // BUG (figure_correspondence.cpp, resample): this fails today with m = 8.
-  // The loop's common parameter runs from the source's vertex 0 (order 0);
-  // the target partner of that vertex lands at order 1 - 4e-8 when the
-  // golden-section shift is a hair above the exact one, and the merge
-  // looks for partners with lower_bound in [0, 1) without wrapping round
-  // the seam. So source vertex 0 gets a dummy on target edge 0 at fraction
-  // 3.9e-8 and target vertex 0 a dummy on source edge 6 at 3e-8 from
-  // source vertex 0: two extra vertices, each a sliver away from a vertex.
+  // A regression test: the loop's common parameter runs from the source's
+  // vertex 0 (order 0), and the target partner of that vertex lands at order
+  // 1 - 4e-8 when the golden-section shift is a hair above the exact one. A
+  // merge that did not look across the seam gave m = 8 at 0.3 rad: source
+  // vertex 0 with a dummy on target edge 0 at fraction 3.9e-8 and target
+  // vertex 0 with a dummy 3e-8 from source vertex 0 (fixed in 6cc2995).
   std::mt19937 rng(7030);
   std::vector<Vec2> corners;
   for (int i = 0; i < 7; ++i) {
