@@ -201,6 +201,44 @@ TEST_CASE("an identical figure renumbered and moved matches vertex for vertex, w
   CHECK(c.source.vertices == kMan.vertices);
 }
 
+TEST_CASE("an asymmetric figure turned by a large angle still matches itself exactly", "[correspond_figures]") {
+  // Each figure against itself turned: the identity is an exact fit
+  // (residual 0); every other matching distorts the drawing visibly (radii
+  // or arm lengths differ by 20-30%).
+  //
+  // BUG (figure_correspondence.cpp, Fit::cost, since 19441e2): these fail
+  // today. The rotation charge 0.02 (1 - cos rotation) is added to every
+  // candidate's residual, so a wrong matching with a small rotation beats
+  // the exact one as soon as its residual is below the charge difference:
+  // the quadrilateral turned by 120 degrees is matched with every vertex on
+  // its neighbour (rotation -59.8 degrees, residual 0.0039), the pentagon
+  // turned by 60 degrees likewise (rotation -13.6, residual 0.0057), the
+  // plus sign turned by 135 degrees with its arms shifted by one (rotation
+  // -45, residual 0.0036). The charge was meant to break near ties of
+  // nearly symmetric figures, not to outweigh an exact fit.
+  struct Case {
+    const char* name;
+    StickFigure figure;
+    double degrees;
+  };
+  const std::vector<Case> cases = {
+      {"quadrilateral with radii 1, 0.8, 0.9, 0.7", polygon({{1, 0}, {0, 0.8}, {-0.9, 0}, {0, -0.7}}), 120},
+      {"irregular pentagon", polygon({{1, 0}, {0.3, 0.9}, {-0.8, 0.6}, {-0.7, -0.7}, {0.3, -0.85}}), 60},
+      {"plus sign with arms 1, 0.9, 1, 0.8",
+       figure({{0, 0}, {1, 0}, {0, 0.9}, {-1, 0}, {0, -0.8}}, {{0, 1}, {0, 2}, {0, 3}, {0, 4}}), 135},
+  };
+  for (const Case& c : cases) {
+    INFO(c.name << " turned by " << c.degrees << " degrees");
+    const Renumbered turned = renumbered(moved(c.figure, c.degrees * kPi / 180, 1.0, 0, 0), 3);
+    const FigureCorrespondence m = correspond_figures(c.figure, turned.figure);
+    check_matching(m, c.figure, turned.figure);
+    CHECK(m.source.vertices.size() == c.figure.vertices.size());
+    for (int v = 0; v < int(c.figure.vertices.size()); ++v) CHECK(partner(m, v) == turned.new_of_old[std::size_t(v)]);
+    CHECK(m.residual == Approx(0).margin(1e-9));
+    CHECK(m.rotation_degrees == Approx(c.degrees).margin(1e-4));
+  }
+}
+
 TEST_CASE("a random plane graph with faces matches its renumbered, rotated copy exactly", "[correspond_figures]") {
   std::mt19937 rng(4242);
   for (int round = 0; round < 6; ++round) {
