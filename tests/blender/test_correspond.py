@@ -389,10 +389,10 @@ def test_the_pins_panel_counts_the_pins_and_says_what_a_bake_would_refuse(scene,
 
 def test_undo_of_a_pin_in_edit_mode(scene, addon):
     # Edit-mode undo restores the meshes' vertices and their group
-    # membership, but in Blender 3.4 not the names of groups added in Edit
-    # Mode: Blender's own Assign to New Group leaves an empty group behind
-    # just the same. An empty pin group is then no silent non-pin: the bake
-    # names it, and Clear Pins removes it.
+    # membership, but in Blender 3.4 and 4.3 not the names of groups added
+    # in Edit Mode: Blender's own Assign to New Group leaves an empty group
+    # behind just the same (measured; 5.2 removes it). An empty pin group is
+    # then no silent non-pin: the bake names it, and Clear Pins removes it.
     source, target = make_drawn_pair()
     try:
         edit_both(source, target, ([2], [5]))
