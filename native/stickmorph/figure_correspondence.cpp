@@ -42,18 +42,19 @@ constexpr double kMergeShare = 0.3;
 constexpr double kCornerTurn = 0.7;  // 40 degrees
 constexpr double kCornerWindow = 0.08;
 constexpr std::size_t kMaxCornerPairs = 4'000'000;
-// The cost of a matching is its similarity residual plus this much times
-// (1 - cos rotation): a nearly symmetric figure (an X, a letter with a near
-// half-turn symmetry) drawn twice fits slightly better turned half round by
-// accident of style, and a morph that spins it by 150 degrees where 30 would
-// do is not what anyone drew. Residuals of different drawings of one figure
-// are 0.01 to 0.05, of a wrong matching of an asymmetric one 0.2 and more,
-// so the penalty (at most twice this) only decides between near equals.
-constexpr double kRotationCost = 0.02;
+// The cost of a matching is its similarity residual times 1 + this much
+// times (1 - cos rotation), up to three times the residual for a half turn:
+// a nearly symmetric figure (an X, a letter with a near half-turn symmetry)
+// drawn twice can fit slightly better turned half round by accident of
+// style, and a morph that spins it by 150 degrees where 30 would do is not
+// what anyone drew. A factor, not a sum: an exact fit (residual 0) still
+// beats every other, however far it turns, so a figure drawn turned by 120
+// degrees keeps its own vertices.
+constexpr double kRotationCharge = 1.0;
 // Costs within this much of the best are ties, broken by the smaller
 // rotation: a square matched onto a square has four equal fits.
 constexpr double kTieRelative = 0.02;
-constexpr double kTieAbsolute = 1e-4;
+constexpr double kTieAbsolute = 1e-9;  // roundoff of the residual of exact symmetries
 
 // ---------------------------------------------------------------- tracks ---
 
@@ -270,7 +271,7 @@ void compare_invariants(const Skeleton& source, const Skeleton& target) {
 struct Fit {
   double residual = 1;
   double rotation = 0;  ///< radians, counter-clockwise, in (-pi, pi]
-  double cost() const { return residual + kRotationCost * (1 - std::cos(rotation)); }
+  double cost() const { return residual * (1 + kRotationCharge * (1 - std::cos(rotation))); }
 };
 
 struct SampleSet {
@@ -489,89 +490,99 @@ int exterior_dart(const Skeleton& skeleton) {
   throw InternalError("correspond: the exterior face of a figure with nodes holds no dart leaving a node");
 }
 
+/// The candidate an isomorphism (the image of every source dart leaving a
+/// node) gives, or nothing with `broken` saying which pin it breaks.
+std::optional<Candidate> make_candidate(const Skeleton& source, const Skeleton& target, const std::vector<int>& map,
+                                        const std::vector<std::pair<int, int>>& node_pins,
+                                        const std::vector<PinPlace>& chain_pins, std::string& broken) {
+  Candidate candidate;
+  candidate.node_image.assign(source.figure->vertices.size(), -1);
+  for (int dart = 0; dart < source.dart_count(); ++dart)
+    if (source.leaves_node(dart))
+      candidate.node_image[std::size_t(source.node_of(dart))] = target.node_of(map[std::size_t(dart)]);
+  for (const auto& [s, t] : node_pins)
+    if (candidate.node_image[std::size_t(s)] != t) {
+      broken = "it would send source vertex " + std::to_string(s) + " to target vertex " +
+               std::to_string(candidate.node_image[std::size_t(s)]) + ", not " + std::to_string(t);
+      return std::nullopt;
+    }
+  for (std::size_t chain = 0; chain < source.chains.size(); ++chain) {
+    const int e = map[std::size_t(source.chain_first[chain])];
+    ChainMatch match;
+    match.source_chain = int(chain);
+    match.target_chain = target.chain_of_dart[std::size_t(e)];
+    match.reversed = !target.forward[std::size_t(e)];
+    std::optional<ParameterMap> pmap = chain_map(chain_pins, match.source_chain, match.target_chain, match.reversed);
+    if (!pmap) {
+      broken = "a pinned vertex inside a stroke would land on another stroke or out of order along it";
+      return std::nullopt;
+    }
+    match.map = *pmap;
+    candidate.chains.push_back(std::move(match));
+  }
+  return candidate;
+}
+
 struct Search {
-  std::vector<Candidate> candidates;  ///< every isomorphism keeping the exterior and the pins
-  bool any_isomorphism = false;       ///< ignoring the exterior and the pins
-  bool any_exterior = false;          ///< keeping the exterior, ignoring the pins
-  std::string pin_conflict;           ///< why the first isomorphism keeping the exterior broke the pins
+  int seed = -1;                 ///< the source dart every isomorphism is extended from
+  std::vector<int> images;       ///< its image in each candidate keeping the exterior and the pins
+  std::vector<Fit> fits;         ///< and each one's fit (only the winner is rebuilt in full)
+  bool any_isomorphism = false;  ///< ignoring the exterior and the pins
+  bool any_exterior = false;     ///< keeping the exterior, ignoring the pins
+  std::string pin_conflict;      ///< why the first isomorphism keeping the exterior broke the pins
 };
 
+// Every orientation-preserving isomorphism is tried, pins or not, so that
+// a pair whose pins no matching respects is told apart from a pair that
+// matches in no way at all; the pins only filter. Each candidate is scored
+// and dropped, so memory stays that of one candidate (a wheel of k spokes
+// has k of them).
 Search search_isomorphisms(const Skeleton& source, const Skeleton& target,
                            const std::vector<std::pair<int, int>>& node_pins, const std::vector<PinPlace>& chain_pins,
                            bool with_cost) {
   Search search;
-  // Seed at the node whose degree is rarest among the target's nodes (or at
-  // a pinned node): the fewest images to try, each O(skeleton) to extend.
+  // Seed at the node whose degree is rarest among the target's nodes: the
+  // fewest images to try, each O(skeleton) to extend.
   std::map<int, int> degree_count;
   for (int node : target.nodes) ++degree_count[target.degree[std::size_t(node)]];
   int seed_node = source.nodes[0];
   for (int node : source.nodes)
     if (degree_count[source.degree[std::size_t(node)]] < degree_count[source.degree[std::size_t(seed_node)]])
       seed_node = node;
-  std::vector<int> images;
-  if (!node_pins.empty()) {
-    seed_node = node_pins[0].first;
-    images.push_back(node_pins[0].second);
-  } else {
-    for (int node : target.nodes)
-      if (target.degree[std::size_t(node)] == source.degree[std::size_t(seed_node)]) images.push_back(node);
-  }
-  const int seed = source.decomposition.rotation.outgoing_ccw[std::size_t(seed_node)][0];
+  search.seed = source.decomposition.rotation.outgoing_ccw[std::size_t(seed_node)][0];
   const int source_exterior = exterior_dart(source);
   const int target_exterior = target.decomposition.exterior;
-  for (int image_node : images) {
+  for (int image_node : target.nodes) {
+    if (target.degree[std::size_t(image_node)] != source.degree[std::size_t(seed_node)]) continue;
     for (int image : target.decomposition.rotation.outgoing_ccw[std::size_t(image_node)]) {
-      const std::optional<std::vector<int>> map = extend_isomorphism(source, target, seed, image);
+      const std::optional<std::vector<int>> map = extend_isomorphism(source, target, search.seed, image);
       if (!map) continue;
       search.any_isomorphism = true;
       const int exterior_image = (*map)[std::size_t(source_exterior)];
       if (target.decomposition.sequence_of_dart[std::size_t(exterior_image)] != target_exterior) continue;
       search.any_exterior = true;
-      Candidate candidate;
-      candidate.node_image.assign(source.figure->vertices.size(), -1);
-      for (int dart = 0; dart < source.dart_count(); ++dart)
-        if (source.leaves_node(dart))
-          candidate.node_image[std::size_t(source.node_of(dart))] = target.node_of((*map)[std::size_t(dart)]);
       std::string broken;
-      for (const auto& [s, t] : node_pins)
-        if (broken.empty() && candidate.node_image[std::size_t(s)] != t)
-          broken = "it would send source vertex " + std::to_string(s) + " to target vertex " +
-                   std::to_string(candidate.node_image[std::size_t(s)]) + ", not " + std::to_string(t);
-      for (std::size_t chain = 0; chain < source.chains.size() && broken.empty(); ++chain) {
-        const int e = (*map)[std::size_t(source.chain_first[chain])];
-        ChainMatch match;
-        match.source_chain = int(chain);
-        match.target_chain = target.chain_of_dart[std::size_t(e)];
-        match.reversed = !target.forward[std::size_t(e)];
-        std::optional<ParameterMap> pmap = chain_map(chain_pins, match.source_chain, match.target_chain, match.reversed);
-        if (!pmap) {
-          broken = "a pinned vertex inside a stroke would land on another stroke or out of order along it";
-          break;
-        }
-        match.map = *pmap;
-        candidate.chains.push_back(std::move(match));
-      }
-      if (!broken.empty()) {
+      const std::optional<Candidate> candidate = make_candidate(source, target, *map, node_pins, chain_pins, broken);
+      if (!candidate) {
         if (search.pin_conflict.empty()) search.pin_conflict = broken;
         continue;
       }
-      if (with_cost) candidate.fit = candidate_fit(source, target, candidate.chains, kChainSamples);
-      search.candidates.push_back(std::move(candidate));
+      search.images.push_back(image);
+      search.fits.push_back(with_cost ? candidate_fit(source, target, candidate->chains, kChainSamples) : Fit{});
     }
   }
   return search;
 }
 
-/// The least-cost candidate; near ties go to the smallest rotation.
-std::size_t best_candidate(const std::vector<Candidate>& candidates) {
+/// The least-cost fit; near ties go to the smallest rotation.
+std::size_t best_fit(const std::vector<Fit>& fits) {
   double least = std::numeric_limits<double>::infinity();
-  for (const Candidate& c : candidates) least = std::min(least, c.fit.cost());
+  for (const Fit& fit : fits) least = std::min(least, fit.cost());
   const double tie = least + kTieRelative * least + kTieAbsolute;
-  std::size_t best = candidates.size();
-  for (std::size_t k = 0; k < candidates.size(); ++k) {
-    if (candidates[k].fit.cost() > tie) continue;
-    if (best == candidates.size() || std::abs(candidates[k].fit.rotation) < std::abs(candidates[best].fit.rotation))
-      best = k;
+  std::size_t best = fits.size();
+  for (std::size_t k = 0; k < fits.size(); ++k) {
+    if (fits[k].cost() > tie) continue;
+    if (best == fits.size() || std::abs(fits[k].rotation) < std::abs(fits[best].rotation)) best = k;
   }
   return best;
 }
@@ -616,7 +627,7 @@ Candidate match_loops(const Skeleton& source, const Skeleton& target, const std:
   // residual that could still win once its rotation is charged is refined
   // by golden-section search on the residual alone within a grid step (the
   // charge picks between fits, it must not pull a fit off its best shift),
-  // and best_candidate then decides by cost.
+  // and best_fit then decides by cost.
   auto fit_at = [&](double shift) {
     ChainMatch m = match;
     m.map.u = {0.0};
@@ -651,17 +662,14 @@ Candidate match_loops(const Skeleton& source, const Skeleton& target, const std:
     refined.emplace_back(shift - std::floor(shift), fit_at(shift));
   }
   compared = int(refined.size());
-  std::vector<Candidate> options;
-  for (const auto& [shift, fit] : refined) {
-    Candidate c = candidate;
-    ChainMatch m = match;
-    m.map.u = {0.0};
-    m.map.w = {shift};
-    c.chains.push_back(m);
-    c.fit = fit;
-    options.push_back(std::move(c));
-  }
-  return options[best_candidate(options)];
+  std::vector<Fit> fits;
+  for (const auto& [shift, fit] : refined) fits.push_back(fit);
+  const auto& [shift, fit] = refined[best_fit(fits)];
+  match.map.u = {0.0};
+  match.map.w = {shift};
+  candidate.chains.push_back(match);
+  candidate.fit = fit;
+  return candidate;
 }
 
 // --------------------------------------------------------------- corners ---
@@ -977,7 +985,7 @@ FigureCorrespondence correspond_figures(const StickFigure& source, const StickFi
     chosen = match_loops(s, t, chain_pins, result.candidates);
   } else {
     Search search = search_isomorphisms(s, t, node_pins, chain_pins, true);
-    if (search.candidates.empty()) {
+    if (search.images.empty()) {
       if (!search.any_isomorphism) {
         // Reflected, would the skeletons match? Then say so.
         StickFigure mirrored = target;
@@ -995,11 +1003,18 @@ FigureCorrespondence correspond_figures(const StickFigure& source, const StickFi
                                        "correspond: the figures match only with another face outside (the source's "
                                        "outer boundary would become an inner one)");
       throw IncompatibleFiguresError(Incompatibility::PinsUnsatisfiable,
-                                     "correspond: no matching respects every pin (the best one breaks a pin: " +
+                                     "correspond: no matching respects every pin (the first one tried breaks one: " +
                                          search.pin_conflict + ")");
     }
-    result.candidates = int(search.candidates.size());
-    chosen = std::move(search.candidates[best_candidate(search.candidates)]);
+    result.candidates = int(search.images.size());
+    // The winner rebuilt in full from its seed image (the search kept its fit only).
+    const std::size_t best = best_fit(search.fits);
+    const std::optional<std::vector<int>> map = extend_isomorphism(s, t, search.seed, search.images[best]);
+    std::string broken;
+    std::optional<Candidate> winner = map ? make_candidate(s, t, *map, node_pins, chain_pins, broken) : std::nullopt;
+    if (!winner) throw InternalError("correspond: the best matching could not be rebuilt");
+    chosen = std::move(*winner);
+    chosen.fit = search.fits[best];
   }
   result.residual = chosen.fit.residual;
   result.rotation_degrees = chosen.fit.rotation * 180.0 / kPi;
