@@ -206,16 +206,10 @@ TEST_CASE("an asymmetric figure turned by a large angle still matches itself exa
   // (residual 0); every other matching distorts the drawing visibly (radii
   // or arm lengths differ by 20-30%).
   //
-  // BUG (figure_correspondence.cpp, Fit::cost, since 19441e2): these fail
-  // today. The rotation charge 0.02 (1 - cos rotation) is added to every
-  // candidate's residual, so a wrong matching with a small rotation beats
-  // the exact one as soon as its residual is below the charge difference:
-  // the quadrilateral turned by 120 degrees is matched with every vertex on
-  // its neighbour (rotation -59.8 degrees, residual 0.0039), the pentagon
-  // turned by 60 degrees likewise (rotation -13.6, residual 0.0057), the
-  // plus sign turned by 135 degrees with its arms shifted by one (rotation
-  // -45, residual 0.0036). The charge was meant to break near ties of
-  // nearly symmetric figures, not to outweigh an exact fit.
+  // A regression test: an additive rotation charge (19441e2) once let a
+  // wrong matching with a small rotation beat the exact one (the
+  // quadrilateral turned by 120 degrees matched vertex to neighbour). The
+  // charge now multiplies the residual, so an exact fit always wins.
   struct Case {
     const char* name;
     StickFigure figure;
@@ -605,14 +599,10 @@ TEST_CASE("a node pin that no matching satisfies is refused as unsatisfiable, wh
           "[correspond_figures]") {
   // Each pair below is a figure and itself, which match without the pin.
   //
-  // BUG (figure_correspondence.cpp, search_isomorphisms and its caller):
-  // these fail today. With a node pin the search seeds only at the first
-  // pin's target node, so Search::any_isomorphism and any_exterior (meant to
-  // ignore the pins) come out false when that pin is what no isomorphism
-  // allows, and the caller then blames the figures: the stick man pinned
-  // head to hand is refused as a MirrorImage of himself, the chiral tree
-  // pinned end to end as TopologyDiffers ("another arrangement"), and K4
-  // pinned centre to corner as ExteriorDiffers. Expected PinsUnsatisfiable.
+  // A regression test: the search once seeded at the first pin's target
+  // node only, so a pin no isomorphism allows made the figures look
+  // unmatchable (a mirror image, another arrangement, another exterior).
+  // Now every isomorphism is tried and the pins only filter.
   struct Case {
     const char* name;
     StickFigure figure;
