@@ -3,17 +3,18 @@
 #
 #   scripts/fuzz.sh --target NAME --time SECONDS [--build-dir DIR]
 #
-# NAME is figure_reader or morph_pair (the executable is DIR/fuzz/fuzz_NAME,
-# DIR defaults to build-sanitize, which scripts/sanitize.sh builds). The
-# committed seeds (tests/data/fuzz/NAME) and regression inputs
-# (tests/data/fuzz/regressions/NAME) are read but never written: inputs the
-# fuzzer finds interesting go to out/fuzz/NAME/corpus, crash, timeout and
-# out-of-memory inputs to out/fuzz/NAME/. Exits 0 when the time ran out with
+# NAME is figure_reader, morph_pair or correspond_pair (the executable is
+# DIR/fuzz/fuzz_NAME, DIR defaults to build-sanitize, which
+# scripts/sanitize.sh builds). The committed seeds (tests/data/fuzz/NAME)
+# and regression inputs (tests/data/fuzz/regressions/NAME) are read but
+# never written: inputs the fuzzer finds interesting go to
+# out/fuzz/NAME/corpus, crash, timeout and out-of-memory inputs to
+# out/fuzz/NAME/. Exits 0 when the time ran out with
 # no finding, 1 on a finding (printing how to reproduce it), 2 on bad usage.
 set -euo pipefail
 
 usage() {
-  echo "usage: scripts/fuzz.sh --target figure_reader|morph_pair --time SECONDS [--build-dir DIR]" >&2
+  echo "usage: scripts/fuzz.sh --target figure_reader|morph_pair|correspond_pair --time SECONDS [--build-dir DIR]" >&2
 }
 
 target="" seconds="" build_dir=build-sanitize
@@ -27,8 +28,8 @@ while [[ $# -gt 0 ]]; do
   esac
 done
 case "$target" in
-  figure_reader|morph_pair) ;;
-  *) echo "scripts/fuzz.sh: --target must be figure_reader or morph_pair, got '$target'" >&2; usage; exit 2 ;;
+  figure_reader|morph_pair|correspond_pair) ;;
+  *) echo "scripts/fuzz.sh: --target must be figure_reader, morph_pair or correspond_pair, got '$target'" >&2; usage; exit 2 ;;
 esac
 if ! [[ "$seconds" =~ ^[1-9][0-9]*$ ]]; then
   echo "scripts/fuzz.sh: --time needs a whole number of seconds, got '$seconds'" >&2; usage; exit 2
