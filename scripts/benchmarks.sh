@@ -70,7 +70,12 @@ else
 fi
 
 echo "==== build ($build from $source_dir at $commit, Release) ===="
-if [[ ! -f "$build/CMakeCache.txt" ]]; then
+# Configured every run, not only the first: a build directory configured
+# at an older commit has no Makefile rule for a target added since, and
+# naming several targets at once does not regenerate it first.
+if [[ -f "$build/CMakeCache.txt" ]]; then
+  cmake -S "$source_dir" -B "$build" >/dev/null
+else
   cmake -S "$source_dir" -B "$build" -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 \
     -DSTICKMORPH_BUILD_PYTHON=OFF -DSTICKMORPH_BUILD_TESTS=OFF
 fi
