@@ -68,6 +68,11 @@
 //       derived, t is s's own vertex in the target (a satisfiable pin when
 //       s is an original vertex), else t = (byte & 127) % (target count + 1)
 //   Missing bytes read as 0.
+//
+// With STICKMORPH_FUZZ_TRACE=1 the target also prints the decoded pair as a
+// pair document of the JSON encoding and, on a match, the matched pair
+// (compatible by index, the input of fuzz_morph_pair): a binary finding can
+// then be described as figures, and a morph finding told from a matching one.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -306,7 +311,18 @@ std::string describe_pins(const std::vector<VertexPin>& pins) {
 
 void morph_matched(const PairInput& input, const FigureCorrespondence& c);
 
+// The decoded pair as a pair document of the JSON encoding, so that a
+// binary finding can be read, described and replayed as figures.
+std::string pair_document(const PairInput& input) {
+  std::string pins;
+  for (const VertexPin& pin : input.pins)
+    pins += (pins.empty() ? "[" : ",[") + std::to_string(pin.source) + "," + std::to_string(pin.target) + "]";
+  return "{\"source\":" + fuzz::figure_to_json(input.source) + ",\"target\":" + fuzz::figure_to_json(input.target) +
+         ",\"pins\":[" + pins + "]}";
+}
+
 void correspond_pair(const PairInput& input) {
+  if (fuzz::tracing()) fuzz::trace("pair: " + pair_document(input) + (input.faithful ? " (faithful)" : ""));
   const bool well_formed = pins_well_formed(input);
   FigureCorrespondence c;
   try {
@@ -352,6 +368,11 @@ void correspond_pair(const PairInput& input) {
   }
   fuzz::trace("matched: " + std::to_string(ns) + " + " + std::to_string(input.target.vertices.size()) + " -> " +
               std::to_string(m) + " vertices, " + std::to_string(c.candidates) + " candidates");
+  // The matched figures, compatible by index: fuzz_morph_pair's input, to
+  // tell a finding in the matching from one in the morph.
+  if (fuzz::tracing())
+    fuzz::trace("matched pair: {\"source\":" + fuzz::figure_to_json(c.source) +
+                ",\"target\":" + fuzz::figure_to_json(c.target) + "}");
   if (m > kMaxMorphVertices) return;
 
   // From here on the pair is valid and matchable with these pins, so the
