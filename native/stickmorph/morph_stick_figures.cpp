@@ -129,7 +129,20 @@ GuidedMorph prepare_rigid_morph_checked(const StickFigure& source, const StickFi
         stats.triangulate_ms += milliseconds_since(again);
       }
     }
-    if (!morph) make(SimilarityMotion{});
+    if (!morph) {
+      try {
+        make(SimilarityMotion{});
+      } catch (const VerificationError&) {
+        // Convex-combination weights of a nearly flat triangle that the
+        // guide's enclosure made failed in floating point (node_weights):
+        // the paper's own triangulation of the pair, the barycentric
+        // method's, is the last resort.
+        const auto again = std::chrono::steady_clock::now();
+        triangulation = triangulate_figures(source, target, paper_options, &stats.triangulation);
+        stats.triangulate_ms += milliseconds_since(again);
+        make(SimilarityMotion{});
+      }
+    }
     const double setup_ms = milliseconds_since(start);
     stats.factorize_ms = setup_ms;
     stats.steiner_vertices = triangulation.steiner_vertices;

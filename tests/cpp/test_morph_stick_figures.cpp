@@ -339,3 +339,28 @@ TEST_CASE("the pipeline's errors carry what callers need without parsing message
     }
   }
 }
+
+TEST_CASE("the rigid method falls back to the paper's triangulation where the guide's has a star too flat to weigh") {
+  // A pinned zigzag matched onto a crowded copy (found by fuzz_correspond_pair,
+  // tests/data/fuzz/regressions/correspond_pair): the guide's enclosure gave a
+  // triangulation whose mean value weights fail in floating point at figure
+  // vertex 0; the barycentric method's triangulation of the same pair morphs.
+  const StickFigure source = make_stick_figure(
+      {{0.0, 0.0}, {10.0, 20.0}, {20.0, 0.0}, {30.0, 20.0}, {40.0, 0.0}, {50.0, 20.0},
+       {9.75015461757851, 19.50030923515702}, {13.333333333333332, 13.333333333333336},
+       {16.666666666666668, 6.666666666666665}, {47.29895519069767, 14.597910381395335},
+       {15.006485084306096, 9.987029831387808}},
+      {{0, 6}, {6, 1}, {1, 7}, {7, 10}, {10, 8}, {8, 2}, {2, 3}, {3, 4}, {4, 9}, {9, 5}});
+  const StickFigure target = make_stick_figure(
+      {{320.015625, 40.0}, {322.5, 45.0}, {330.0, 40.0}, {330.9015324861232, 41.80306497224631},
+       {331.8030649722463, 43.606129944492615}, {333.0, 45.0}, {322.44163424124514, 45.13326848249027},
+       {325.0, 40.0}, {327.5, 45.0}, {332.46108949416345, 44.92217898832685},
+       {326.2548638132296, 42.509727626459146}},
+      {{0, 6}, {6, 1}, {1, 7}, {7, 10}, {10, 8}, {8, 2}, {2, 3}, {3, 4}, {4, 9}, {9, 5}});
+  MorphStickFiguresOptions options;
+  options.frames = 5;
+  const MorphStickFiguresResult result = morph_stick_figures(source, target, options);
+  REQUIRE(result.frames.size() == 5);
+  CHECK(result.frames.front() == source.vertices);
+  CHECK(result.frames.back() == target.vertices);
+}

@@ -133,9 +133,13 @@ std::vector<double> node_weights(const FigureTriangulation& tri, const Topology&
   for (double x : w)
     if (!(x > 0) || !std::isfinite(x))
       // Not the caller's fault: every triangle passed the exact orientation
-      // test (require_positive), and the weights of a valid triangle are positive in
-      // exact arithmetic, so it is this computation that failed.
-      throw InternalError("morph: the triangles around " + node_text(tri, v) +
+      // test (require_positive), and the weights of a valid triangle are
+      // positive in exact arithmetic, so it is this floating-point
+      // computation that failed on a nearly flat triangle. A triangulation
+      // the engine cannot morph, like a frame it cannot verify: the callers
+      // that have another triangulation to try (the rigid method's
+      // fallbacks) catch it, the others report it.
+      throw VerificationError("morph: the triangles around " + node_text(tri, v) +
                           " are too close to degenerate for convex-combination weights");
   return w;
 }
