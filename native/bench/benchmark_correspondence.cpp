@@ -55,6 +55,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench_child.h"
 #include "stickmorph/compatibility.h"
 #include "stickmorph/errors.h"
 #include "stickmorph/figure_correspondence.h"
@@ -73,10 +74,6 @@ constexpr int kFitMinN = 100;
 // A match that takes longer than this is not repeated.
 constexpr double kRepeatOnlyBelowMs = 10000;
 
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 using RawEdges = std::vector<std::array<std::int64_t, 2>>;
 
@@ -422,75 +419,6 @@ std::string run_case(const std::string& family, int requested, int repeat) {
   return record.str();
 }
 
-// ---------------------------------------------------------------------------
-// Children (as in benchmark_morph.cpp)
-
-struct ChildResult {
-  std::string status;  ///< ok, failed, timeout, out_of_memory, crashed
-  std::string body;    ///< the child's JSON fields (ok) or message
-  double wall_ms = 0;
-  long peak_kib = 0;
-};
-
-ChildResult run_child(const std::function<std::string()>& work, int seconds, long memory_mib) {
-  ChildResult result;
-  int fds[2];
-  if (pipe(fds) != 0) throw Error(std::string("pipe: ") + std::strerror(errno));
-  std::cout.flush();
-  std::cerr.flush();
-  const auto start = Clock::now();
-  const pid_t child = fork();
-  if (child < 0) throw Error(std::string("fork: ") + std::strerror(errno));
-  if (child == 0) {
-    close(fds[0]);
-    struct rlimit limit {};
-    limit.rlim_cur = limit.rlim_max = rlim_t(memory_mib) * 1024 * 1024;
-    setrlimit(RLIMIT_AS, &limit);
-    alarm(unsigned(seconds));  // SIGALRM's default action ends the child
-    std::string message;
-    try {
-      message = "ok " + work();
-    } catch (const std::bad_alloc&) {
-      message = "out_of_memory more than the " + std::to_string(memory_mib) + " MiB address-space limit";
-    } catch (const std::exception& error) {
-      message = std::string("failed ") + error.what();
-    }
-    for (char& ch : message)
-      if (ch == '\n') ch = ' ';
-    std::size_t sent = 0;
-    while (sent < message.size()) {
-      const ssize_t wrote = write(fds[1], message.data() + sent, message.size() - sent);
-      if (wrote <= 0) break;
-      sent += std::size_t(wrote);
-    }
-    close(fds[1]);
-    _exit(0);
-  }
-  close(fds[1]);
-  std::string text;
-  char chunk[4096];
-  ssize_t got;
-  while ((got = read(fds[0], chunk, sizeof chunk)) > 0) text.append(chunk, std::size_t(got));
-  close(fds[0]);
-  int status = 0;
-  struct rusage usage {};
-  wait4(child, &status, 0, &usage);
-  result.wall_ms = ms_since(start);
-  result.peak_kib = long(usage.ru_maxrss);  // kilobytes on Linux
-  const std::size_t space = text.find(' ');
-  if (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM) {
-    result.status = "timeout";
-    result.body = "stopped after the " + std::to_string(seconds) + " s limit";
-  } else if (WIFSIGNALED(status) || space == std::string::npos) {
-    result.status = "crashed";
-    result.body = WIFSIGNALED(status) ? "signal " + std::to_string(WTERMSIG(status))
-                                      : "exit status " + std::to_string(WEXITSTATUS(status));
-  } else {
-    result.status = text.substr(0, space);
-    result.body = text.substr(space + 1);
-  }
-  return result;
-}
 
 // ---------------------------------------------------------------------------
 // The report
@@ -672,7 +600,7 @@ int run(int argc, char** argv) {
   }
   std::cerr << "done in " << int(ms_since(run_start) / 1000) << " s\n";
 
-  if (json) {
+  if (json.is_open()) {
     std::string sizes = "[", families = "[";
     for (std::size_t i = 0; i < options.sizes.size(); ++i) sizes += (i ? "," : "") + std::to_string(options.sizes[i]);
     for (std::size_t i = 0; i < options.families.size(); ++i)
