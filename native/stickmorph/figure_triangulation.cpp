@@ -99,7 +99,17 @@ FigureTriangulation triangulate_figures(const StickFigure& source, const StickFi
   // Steiner vertices get new nodes.
   auto glue = [&](const PolygonPair& pair, const std::string& label) {
     face_options.label = label;
-    const CompatibleTriangulation tri = compatible_triangulation(pair, face_options);
+    CompatibleTriangulation tri;
+    try {
+      tri = compatible_triangulation(pair, face_options);
+    } catch (const InvalidFigureError& error) {
+      // The face polygons are the engine's own, built from valid figures;
+      // one that fails the polygon check (a spike folded back to within
+      // rounding of an edge, found by fuzz_correspond_pair) is a face this
+      // triangulation cannot do, refused as promised, so that callers with
+      // another triangulation to try (the rigid method) can.
+      throw VerificationError(error.what());
+    }
     const int c = tri.corner_count;
     const int offset = int(result.source.size());
     for (int s = 0; s < tri.steiner_count(); ++s) {

@@ -499,7 +499,10 @@ TEST_CASE("two single vertices match; a single vertex against an edge does not",
   CHECK(partner(c, 0) == 0);
   CHECK(c.target.vertices[0] == Vec2{-5, 3});
   const StickFigure edge = figure({{0, 0}, {1, 0}}, {{0, 1}});
-  for (const auto& [s, t] : {std::pair{&a, &edge}, std::pair{&edge, &a}}) {
+  for (const auto& [one, other] : {std::pair{&a, &edge}, std::pair{&edge, &a}}) {
+    // Copies for the lambda: C++17 does not let it capture structured bindings (clang refuses).
+    const StickFigure* s = one;
+    const StickFigure* t = other;
     const IncompatibleFiguresError error = incompatible([&] { correspond_figures(*s, *t); });
     CHECK(error.kind() == Incompatibility::TopologyDiffers);
     CHECK_THAT(std::string(error.what()), Contains("a single vertex"));
