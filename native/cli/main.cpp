@@ -255,6 +255,8 @@ std::string morph_document(const StickFigure& source, const MorphStickFiguresRes
   }
   how.triangulate_ms = stats.triangulate_ms;
   how.morph_ms = stats.morph_ms;
+  how.parts = stats.triangulation.parts;
+  how.bridge_vertices = stats.triangulation.bridge_bends;
   if (result.correspondence) {
     how.correspondence = &*result.correspondence;
     how.correspond_ms = stats.correspond_ms;

@@ -26,7 +26,7 @@ void bind_figures(py::module_& m) {
           "kind",
           [](const sm::CompatibilityReport& r) { return incompatibility_name(r.kind); },
           "Why not: 'none', 'vertex_count_differs', 'edge_set_differs', 'mirror_image', "
-          "'rotation_differs' or 'exterior_differs'.")
+          "'rotation_differs', 'exterior_differs' or 'nesting_differs' (a part lies in another face of another part).")
       .def_property_readonly(
           "reason", [](const sm::CompatibilityReport& r) { return r.reason; },
           "Explanation naming vertices; empty when compatible.")

@@ -105,6 +105,8 @@ py::dict morph_dict(const sm::MorphStickFiguresResult& result, const sm::MorphSt
   py::dict statistics;
   statistics["steiner_vertices"] = stats.steiner_vertices;
   statistics["triangles"] = stats.triangles;
+  statistics["parts"] = stats.triangulation.parts;
+  statistics["bridge_vertices"] = stats.triangulation.bridge_bends;
   statistics["milliseconds"] = milliseconds;
   statistics["method"] = sm::morph_method_name(method);
   if (!linear) {
@@ -601,6 +603,8 @@ Returns:
     "triangulation"  the dict triangulate_figures returns, the triangulation
                      the morph used; None for method="linear"
     "stats"          dict: "steiner_vertices" (int), "triangles" (int),
+                     "parts" (int, the figure's parts), "bridge_vertices"
+                     (int, Steiner vertices on the bridges joining them),
                      "milliseconds" (dict of floats: "triangulate", "morph",
                      "factorize", "solve", "verify"), "refined_frames" (int,
                      frames refined in long double), "factorizations" (int,

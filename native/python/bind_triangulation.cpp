@@ -169,7 +169,10 @@ Returns:
                           Steiner vertices on the annulus cut),
                           "interior_steiner" (int, Steiner vertices inside
                           interior faces), "min_angle" (float, radians, the
-                          smallest triangle angle over both embeddings)
+                          smallest triangle angle over both embeddings),
+                          "parts" (int), "bridges" (int, parts - 1) and
+                          "bridge_bends" (int, Steiner vertices on the
+                          bridges that join a figure of several parts)
 
 Raises:
   InvalidFigureError: the source or the target is invalid (the message

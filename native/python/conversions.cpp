@@ -388,6 +388,9 @@ py::dict triangulation_dict(const sm::FigureTriangulation& triangulation,
   statistics["cut_bends"] = stats.cut_bends;
   statistics["interior_steiner"] = stats.interior_steiner;
   statistics["min_angle"] = stats.min_angle;
+  statistics["parts"] = stats.parts;
+  statistics["bridges"] = stats.bridges;
+  statistics["bridge_bends"] = stats.bridge_bends;
   py::dict result;
   result["figure_vertices"] = triangulation.figure_vertices;
   result["enclosure_vertices"] = triangulation.enclosure_vertices;

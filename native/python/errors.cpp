@@ -28,7 +28,6 @@ const char* defect_name(sm::FigureDefect defect) {
     case sm::FigureDefect::CrossingEdges: return "crossing_edges";
     case sm::FigureDefect::OverlappingEdges: return "overlapping_edges";
     case sm::FigureDefect::VertexOnEdge: return "vertex_on_edge";
-    case sm::FigureDefect::Disconnected: return "disconnected";
     case sm::FigureDefect::TooFewCorners: return "too_few_corners";
     case sm::FigureDefect::CoincidentCorners: return "coincident_corners";
     case sm::FigureDefect::ClockwiseCorners: return "clockwise_corners";
@@ -49,6 +48,7 @@ const char* incompatibility_name(sm::Incompatibility kind) {
     case sm::Incompatibility::MirrorImage: return "mirror_image";
     case sm::Incompatibility::RotationDiffers: return "rotation_differs";
     case sm::Incompatibility::ExteriorDiffers: return "exterior_differs";
+    case sm::Incompatibility::NestingDiffers: return "nesting_differs";
     case sm::Incompatibility::TopologyDiffers: return "topology_differs";
     case sm::Incompatibility::PinsUnsatisfiable: return "pins_unsatisfiable";
   }
@@ -226,7 +226,7 @@ void bind_errors(py::module_& m) {
       m, "InvalidFigureError", g_stickmorph_error,
       "A figure that is not a connected straight-line plane graph.\n\n"
       "Attributes (set on instances raised by stickmorph; None on the class):\n"
-      "  defect    what is wrong, e.g. 'crossing_edges', 'disconnected'\n"
+      "  defect    what is wrong, e.g. 'crossing_edges', 'vertex_on_edge'\n"
       "  vertices  list of the vertex indices named in the message\n"
       "  edges     list of the edge indices named in the message\n"
       "  role      'source' or 'target' when the figure is one of a pair, else None\n"

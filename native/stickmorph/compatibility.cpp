@@ -4,6 +4,8 @@
 #include <set>
 #include <utility>
 
+#include "stickmorph/figure_parts.h"
+
 namespace stickmorph {
 namespace {
 
@@ -34,13 +36,33 @@ std::string list_text(const std::vector<int>& items, const char* separator, std:
   return text;
 }
 
-// The exterior sequence as a set of directed edges (tail, head): comparable
-// across figures whose edge lists differ in order or direction.
+// The exterior sequences (one per part) as a set of directed edges (tail,
+// head): comparable across figures whose edge lists differ in order or
+// direction.
 std::set<DirectedEdge> exterior_edges(const StickFigure& figure, const Decomposition& dec) {
   std::set<DirectedEdge> result;
-  for (int d : dec.sequences[dec.exterior].darts)
-    result.emplace(dart_tail(figure, d), dart_head(figure, d));
+  for (int sequence : dec.exterior_of_part)
+    for (int d : dec.sequences[std::size_t(sequence)].darts)
+      result.emplace(dart_tail(figure, d), dart_head(figure, d));
   return result;
+}
+
+// A face named the same way in two figures on the same edge set: its
+// smallest directed edge (a bounded face has at least one dart).
+DirectedEdge face_key(const StickFigure& figure, const Decomposition& dec, int sequence) {
+  DirectedEdge key{-1, -1};
+  for (int d : dec.sequences[std::size_t(sequence)].darts) {
+    const DirectedEdge side{dart_tail(figure, d), dart_head(figure, d)};
+    if (key.first < 0 || side < key) key = side;
+  }
+  return key;
+}
+
+// The face's corners from its smallest vertex, for messages.
+std::vector<int> face_vertices(const Decomposition& dec, int sequence) {
+  std::vector<int> vs = dec.sequences[std::size_t(sequence)].vertices;
+  std::rotate(vs.begin(), std::min_element(vs.begin(), vs.end()), vs.end());
+  return vs;
 }
 
 // The exterior sequence's vertices, starting from its smallest vertex, for
@@ -158,6 +180,45 @@ CompatibilityReport check_compatibility(const StickFigure& source, const Decompo
                             " to vertex " + std::to_string(witness.second) +
                             " faces the unbounded region only in the source)",
                         {witness.first, witness.second});
+  }
+
+  // Issue 14: each part is compatible on its own (above); the parts must also
+  // nest alike. Same edge sets give the same parts.
+  const FigureParts parts = figure_parts(source);
+  if (parts.count() > 1) {
+    const PartNesting source_nesting = part_nesting(source, source_dec, parts);
+    const PartNesting target_nesting = part_nesting(target, target_dec, parts);
+    // Where part D lies relative to part C: the key of C's bounded face
+    // holding it, or {-1, -1} for C's exterior.
+    auto place = [](const StickFigure& figure, const Decomposition& dec, const PartNesting& nesting, int part,
+                    int container) {
+      for (const auto& [c, sequence] : nesting.enclosing[std::size_t(part)])
+        if (c == container) return std::make_pair(face_key(figure, dec, sequence), sequence);
+      return std::make_pair(DirectedEdge{-1, -1}, -1);
+    };
+    for (int part = 0; part < parts.count(); ++part) {
+      // The containers to compare: those of either figure, in order.
+      std::vector<int> containers;
+      for (const auto* nesting : {&source_nesting, &target_nesting})
+        for (const auto& entry : nesting->enclosing[std::size_t(part)]) containers.push_back(entry.first);
+      std::sort(containers.begin(), containers.end());
+      for (int container : containers) {
+        const auto [source_key, source_face] = place(source, source_dec, source_nesting, part, container);
+        const auto [target_key, target_face] = place(target, target_dec, target_nesting, part, container);
+        if (source_key == target_key) continue;
+        auto where = [&](const Decomposition& dec, int face) {
+          if (face < 0) return "outside part " + std::to_string(container);
+          return "inside part " + std::to_string(container) + ", in its face bounded by " +
+                 list_text(face_vertices(dec, face), " ");
+        };
+        const int first = parts.vertices[std::size_t(part)].front();
+        return incompatible(Incompatibility::NestingDiffers,
+                            "the parts nest differently: " + describe_part(parts, part) + " lies " +
+                                where(source_dec, source_face) + " in the source, but " + where(target_dec, target_face) +
+                                " in the target",
+                            {first, parts.vertices[std::size_t(container)].front()});
+      }
+    }
   }
   return CompatibilityReport{};
 }

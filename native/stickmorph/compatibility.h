@@ -6,6 +6,10 @@
 // orientation, and their exterior sequences correspond too. For connected
 // figures on the same edge set this holds exactly when every vertex sees its
 // edges in the same cyclic order and the exterior sequences agree.
+//
+// A figure of several parts (issue 14, figure_parts.h) is compatible when
+// this holds for every part and, beyond it, every part lies in the same face
+// of every other part in both figures (NestingDiffers otherwise).
 #pragma once
 
 #include <string>
@@ -24,6 +28,7 @@ enum class Incompatibility {
   MirrorImage,         ///< the target is a reflection of the source
   RotationDiffers,     ///< a vertex sees its edges in another cyclic order
   ExteriorDiffers,     ///< same cyclic sequences, another one is exterior
+  NestingDiffers,      ///< a part lies in another face of another part (issue 14)
   // Only from correspond_figures (figure_correspondence.h), for figures that
   // do not correspond by index.
   TopologyDiffers,     ///< no matching of the skeletons: loops, ends, junction degrees or their arrangement differ

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "stickmorph/exact_predicates.h"
+#include "stickmorph/figure_parts.h"
 #include "stickmorph/internal/geometry.h"
 
 namespace stickmorph {
@@ -81,16 +82,6 @@ Decomposition decompose(const StickFigure& figure) {
   const int darts = 2 * int(figure.edges.size());
   dec.sequence_of_dart.assign(darts, -1);
 
-  if (darts == 0) {
-    // A lone vertex: the whole plane minus a point is the exterior.
-    CyclicSequence lone;
-    lone.vertices = {0};
-    lone.exterior = true;
-    dec.sequences.push_back(lone);
-    dec.exterior = 0;
-    return dec;
-  }
-
   // Algorithm 1, lines 4-14: walk each unmarked dart around its region.
   for (int start = 0; start < darts; ++start) {
     if (dec.sequence_of_dart[start] >= 0) continue;
@@ -125,14 +116,32 @@ Decomposition decompose(const StickFigure& figure) {
     dec.sequences.push_back(std::move(seq));
   }
 
+  // A lone vertex (a part of its own, issue 14): the whole plane minus a
+  // point is its exterior, a sequence with no darts.
+  for (std::size_t v = 0; v < figure.vertices.size(); ++v)
+    if (dec.rotation.outgoing_ccw[v].empty()) {
+      CyclicSequence lone;
+      lone.vertices = {int(v)};
+      lone.exterior = true;
+      dec.sequences.push_back(lone);
+    }
+
+  // One exterior sequence per part, in the order of the parts.
+  const FigureParts parts = figure_parts(figure);
+  dec.exterior_of_part.assign(std::size_t(parts.count()), -1);
   for (std::size_t i = 0; i < dec.sequences.size(); ++i)
     if (dec.sequences[i].exterior) {
-      if (dec.exterior >= 0)
-        throw InternalError("decomposition: cyclic sequences " + std::to_string(dec.exterior) +
-                            " and " + std::to_string(i) + " are both exterior");
-      dec.exterior = int(i);
+      const int part = parts.part_of_vertex[std::size_t(dec.sequences[i].vertices.front())];
+      int& slot = dec.exterior_of_part[std::size_t(part)];
+      if (slot >= 0)
+        throw InternalError("decomposition: cyclic sequences " + std::to_string(slot) + " and " +
+                            std::to_string(i) + " are both exterior to part " + std::to_string(part));
+      slot = int(i);
     }
-  if (dec.exterior < 0) throw InternalError("decomposition: no exterior cyclic sequence");
+  for (std::size_t part = 0; part < dec.exterior_of_part.size(); ++part)
+    if (dec.exterior_of_part[part] < 0)
+      throw InternalError("decomposition: part " + std::to_string(part) + " has no exterior cyclic sequence");
+  dec.exterior = dec.exterior_of_part.front();
   return dec;
 }
 
@@ -147,7 +156,9 @@ bool is_valid(const Decomposition& dec, const StickFigure& figure) {
   for (std::size_t i = 0; i < dec.sequences.size(); ++i) {
     const CyclicSequence& seq = dec.sequences[i];
     exterior_count += seq.exterior;
-    if (seq.darts.size() != seq.vertices.size() && darts > 0) return false;
+    // A lone vertex's sequence: one vertex, no darts, exterior.
+    if (seq.darts.empty() && (seq.vertices.size() != 1 || !seq.exterior)) return false;
+    if (!seq.darts.empty() && seq.darts.size() != seq.vertices.size()) return false;
     for (std::size_t k = 0; k < seq.darts.size(); ++k) {
       const int d = seq.darts[k];
       if (d < 0 || d >= darts || ++seen[d] != 1) return false;
@@ -156,12 +167,20 @@ bool is_valid(const Decomposition& dec, const StickFigure& figure) {
       if (dec.rotation.next_in_face(d) != seq.darts[(k + 1) % seq.darts.size()]) return false;
     }
   }
-  if (exterior_count != 1 || !dec.sequences[dec.exterior].exterior) return false;
+  const FigureParts parts = figure_parts(figure);
+  if (exterior_count != parts.count() || int(dec.exterior_of_part.size()) != parts.count()) return false;
+  for (int part = 0; part < parts.count(); ++part) {
+    const int e = dec.exterior_of_part[std::size_t(part)];
+    if (e < 0 || e >= int(dec.sequences.size()) || !dec.sequences[std::size_t(e)].exterior) return false;
+    if (parts.part_of_vertex[std::size_t(dec.sequences[std::size_t(e)].vertices.front())] != part) return false;
+  }
+  if (dec.exterior != dec.exterior_of_part.front()) return false;
   if (std::count(seen.begin(), seen.end(), 1) != darts) return false;
-  // Euler's formula for a connected plane graph: V - E + F = 2.
+  // Euler's formula for a plane graph of P parts, each counting its own
+  // exterior: V - E + F = 2P.
   const long euler = long(figure.vertices.size()) - long(figure.edges.size()) +
                      long(dec.sequences.size());
-  return euler == 2;
+  return euler == 2L * parts.count();
 }
 
 }  // namespace stickmorph

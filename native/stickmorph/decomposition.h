@@ -57,15 +57,24 @@ struct Decomposition {
   RotationSystem rotation;
   std::vector<CyclicSequence> sequences;  ///< in order of first unmarked dart
   std::vector<int> sequence_of_dart;      ///< #darts: index into sequences
-  int exterior = -1;                      ///< index of the exterior sequence
+  /// Index of the exterior sequence of part 0, the one holding vertex 0
+  /// (the exterior sequence of a figure of one part).
+  int exterior = -1;
+  /// #parts: the exterior sequence of each part (figure_parts.h), in the
+  /// parts' order. A figure of several parts (issue 14) has one per part;
+  /// how the parts nest is figure_parts.h's `part_nesting`.
+  std::vector<int> exterior_of_part;
 };
 
 /// Orders the darts around each vertex counter-clockwise (exact).
 RotationSystem rotation_system(const StickFigure& figure);
 
-/// Algorithm 1. `figure` must be valid (make_stick_figure). A figure with a
-/// single vertex and no edges decomposes into one exterior sequence with that
-/// vertex, no darts and angle_sum 0 (it has no corners to sum).
+/// Algorithm 1. `figure` must be valid (make_stick_figure). A lone vertex
+/// (a vertex with no edges) has one exterior sequence with that vertex, no
+/// darts and angle_sum 0 (it has no corners to sum). Each part of a figure
+/// of several parts is decomposed on its own terms: the sequences are those
+/// of its parts, each part with its own exterior sequence (listed after the
+/// sequences with darts, the lone vertices' last).
 ///
 /// Interior and exterior are told apart by the paper's angle-sum rule. Each
 /// angle's half-turn class (below, at or above pi) is decided by an exact
@@ -76,7 +85,8 @@ Decomposition decompose(const StickFigure& figure);
 
 /// Checks the combinatorial invariants of a decomposition of `figure`: every
 /// dart in exactly one sequence, consecutive darts chained by next_in_face,
-/// exactly one exterior sequence, and Euler's formula V - E + F = 2.
+/// exactly one exterior sequence per part, and Euler's formula V - E + F = 2P
+/// for P parts.
 bool is_valid(const Decomposition& decomposition, const StickFigure& figure);
 
 }  // namespace stickmorph

@@ -44,8 +44,8 @@ class FileError : public Error {
   int error_number_;
 };
 
-/// What is wrong with a stick figure. A stick figure is a connected
-/// straight-line plane graph (paper, section 1).
+/// What is wrong with a stick figure. A stick figure is a straight-line
+/// plane graph (paper, section 1), of one part or several (issue 14).
 enum class FigureDefect {
   NoVertices,            ///< the vertex list is empty
   NonFiniteCoordinate,   ///< NaN or infinity
@@ -57,7 +57,6 @@ enum class FigureDefect {
   CrossingEdges,         ///< two edges cross at a point interior to both
   OverlappingEdges,      ///< two collinear edges share more than a point
   VertexOnEdge,          ///< a vertex lies on an edge not incident to it
-  Disconnected,          ///< the graph has more than one component
   // Defects of a polygon given by its corner sequence (triangulate_polygon,
   // compatible_triangulation): a weakly simple polygon needs at least three
   // corners, distinct consecutive positions, counter-clockwise order and

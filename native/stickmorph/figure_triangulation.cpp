@@ -10,6 +10,7 @@
 #include "stickmorph/exact_predicates.h"
 #include "stickmorph/internal/annulus_cut.h"
 #include "stickmorph/internal/geometry.h"
+#include "stickmorph/internal/part_bridges.h"
 #include "stickmorph/internal/stopwatch.h"
 #include "stickmorph/internal/triangle_adjacency.h"
 #include "stickmorph/verification.h"
@@ -70,6 +71,47 @@ FigureTriangulation triangulate_figures(const StickFigure& source, const StickFi
   const CompatibilityReport report = check_compatibility(source, source_dec, target, target_dec);
   if (!report.compatible()) throw IncompatibleFiguresError(report.kind, "incompatible figures: " + report.reason, report.vertices);
   measured.decompose_ms = ms_since(stage_start);
+
+  // Issue 14: a figure of several parts is bridged into one (part_bridges.h)
+  // and triangulated as such; the bridges' bends then become Steiner
+  // vertices, so that the result's first n nodes are the figure's.
+  if (source_dec.exterior_of_part.size() > 1) {
+    stage_start = Clock::now();
+    const internal::BridgedFigures bridged = internal::bridge_parts(source, source_dec, target);
+    const double bridge_ms = ms_since(stage_start);
+    FigureTriangulation joined = triangulate_figures(bridged.source, bridged.target, options, stats);
+    const int n = int(source.vertices.size()), bends = bridged.bends, k = joined.enclosure_vertices;
+    // Node order of the bridged triangulation: n figure vertices, the bends,
+    // the enclosure, the Steiner vertices. Wanted: the figure, the
+    // enclosure, the bends, the Steiner vertices.
+    auto renumbered = [&](int v) {
+      if (v < n) return v;
+      if (v < n + bends) return v + k;
+      if (v < n + bends + k) return v - bends;
+      return v;
+    };
+    FigureTriangulation result;
+    result.figure_vertices = n;
+    result.enclosure_vertices = k;
+    result.steiner_vertices = joined.steiner_vertices + bends;
+    result.source.resize(joined.source.size());
+    result.target.resize(joined.target.size());
+    for (std::size_t v = 0; v < joined.source.size(); ++v) {
+      result.source[std::size_t(renumbered(int(v)))] = joined.source[v];
+      result.target[std::size_t(renumbered(int(v)))] = joined.target[v];
+    }
+    for (const auto& t : joined.triangles)
+      result.triangles.push_back({renumbered(t[0]), renumbered(t[1]), renumbered(t[2])});
+    verify_figure_triangulation(result, source);
+    if (stats) {
+      stats->decompose_ms += measured.decompose_ms;
+      stats->parts = int(source_dec.exterior_of_part.size());
+      stats->bridges = bridged.bridges;
+      stats->bridge_bends = bends;
+      stats->bridge_ms = bridge_ms;
+    }
+    return result;
+  }
   stage_start = Clock::now();
 
   const int n = int(source.vertices.size());

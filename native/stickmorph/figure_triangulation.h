@@ -6,6 +6,11 @@
 // annulus between the enclosure and the figure into a (weakly simple)
 // polygon along a path valid in both figures, compatibly triangulate it, and
 // glue everything into one triangulation of the enclosure.
+//
+// A figure of several parts (issue 14, the paper's future work) is first
+// joined into one by bridges valid in both figures (internal/part_bridges.h);
+// the bridges are triangulation edges and their bends Steiner vertices, so
+// every frame of the morph keeps each part in its face.
 #pragma once
 
 #include <array>
@@ -55,6 +60,11 @@ struct FigureTriangulationStats {
   double interior_faces_ms = 0;    ///< section 4 on every interior face (step 2)
   double exterior_face_ms = 0;     ///< section 4 on the cut-open exterior (step 3)
   double verify_ms = 0;            ///< verify_figure_triangulation of the glued result
+  // A figure of several parts (issue 14) is bridged into one first.
+  int parts = 1;                   ///< parts of the figure (figure_parts.h)
+  int bridges = 0;                 ///< bridges between them: parts - 1
+  int bridge_bends = 0;            ///< Steiner vertices on the bridges
+  double bridge_ms = 0;            ///< choosing the bridges, checked exactly
 };
 
 /// Algorithm 3, steps 1-3, for two compatible figures (vertex i of the

@@ -10,6 +10,7 @@
 
 #include "stickmorph/compatibility.h"
 #include "stickmorph/errors.h"
+#include "stickmorph/figure_parts.h"
 
 namespace stickmorph {
 namespace {
@@ -273,6 +274,7 @@ MorphStickFiguresResult morph_corresponding(const StickFigure& source, const Sti
   result.morph_options.weights = options.weights.value_or(WeightKind::MeanValue);
   result.morph_options.verify = options.verify.value_or(true);
   MorphStickFiguresStats& stats = result.stats;
+  stats.triangulation.parts = figure_parts(source).count();
 
   if (options.method == MorphMethod::Linear) {
     // The paper's Figure 8d baseline needs compatible figures like the real

@@ -179,7 +179,7 @@ void check_contacts(const std::vector<Vec2>& V, const std::vector<Edge>& edges) 
     double hi[2] = {std::max(p[0], q[0]), std::max(p[1], q[1])};
     boxes.emplace_back(lo, hi, int(e));
   }
-  // An isolated vertex (only possible in a figure that is also disconnected)
+  // An isolated vertex (a part of its own, a dot)
   // is still checked against the edges, so that "vertex on edge" is reported
   // as such. Its info is -(v + 1).
   if (V.size() > 1)
@@ -235,35 +235,12 @@ void check_contacts(const std::vector<Vec2>& V, const std::vector<Edge>& edges) 
   }
 }
 
-void check_connected(std::size_t vertex_count, const std::vector<Edge>& edges) {
-  // Union-find: a stick figure is connected (paper, section 1).
-  std::vector<int> parent(vertex_count);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
-  std::size_t components = vertex_count;
-  for (const Edge& e : edges) {
-    const int a = find(e[0]), b = find(e[1]);
-    if (a != b) parent[a] = b, --components;
-  }
-  if (components == 1) return;
-  const int root = find(0);
-  int stray = 0;
-  while (find(stray) == root) ++stray;
-  throw InvalidFigureError(FigureDefect::Disconnected,
-                           "the figure is disconnected: it has " + std::to_string(components) +
-                               " components, and vertex " + std::to_string(stray) +
-                               " is not connected to vertex 0",
-                           {0, stray});
-}
-
 void check_figure(const std::vector<Vec2>& vertices, const std::vector<Edge>& edges) {
   check_duplicate_edges(edges);
   check_coincident_vertices(vertices);
+  // No connectivity check: a figure may have several parts (issue 14),
+  // every pair of which is checked above like edges of one part.
   check_contacts(vertices, edges);
-  check_connected(vertices.size(), edges);
 }
 
 }  // namespace

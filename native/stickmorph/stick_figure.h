@@ -3,7 +3,10 @@
 // Surazhsky & Gotsman, "Morphing Stick Figures Using Optimized Compatible
 // Triangulations", Pacific Graphics 2001, section 1: a stick figure is a
 // connected straight-line plane graph. Polylines, polygons, trees,
-// triangulations and tilings are all stick figures.
+// triangulations and tilings are all stick figures. Section 6 leaves
+// disconnected figures to future work; here (issue 14) a figure may have
+// several parts (connected components, a lone vertex included): a dotted i,
+// a ring inside a ring. figure_parts.h names them and says how they nest.
 //
 // Every geometric decision here uses exact predicates
 // (CGAL::Exact_predicates_inexact_constructions_kernel), so a figure is
@@ -35,9 +38,10 @@ constexpr double kMaxCoordinateMagnitude = 1e100;
 ///
 /// Invariants (established by make_stick_figure, checked by is_valid):
 /// finite coordinates within kMaxCoordinateMagnitude, edge indices in range,
-/// no self-loops, no duplicate edges, no coincident vertices, edges meet only
-/// at shared endpoints, and the graph is connected. One vertex with no edges,
-/// or a single edge, is a valid figure.
+/// no self-loops, no duplicate edges, no coincident vertices, and edges meet
+/// only at shared endpoints, within a part and between parts. The graph may
+/// have several parts (figure_parts.h). One vertex with no edges, or a single
+/// edge, is a valid figure.
 struct StickFigure {
   std::vector<Vec2> vertices;  ///< #V by 2 positions
   std::vector<Edge> edges;     ///< #E by 2 vertex indices, as given

@@ -160,12 +160,17 @@ TEST_CASE("edges may meet only at shared endpoints", "[make_stick_figure]") {
   }
 }
 
-TEST_CASE("the figure must be connected", "[make_stick_figure]") {
-  auto e = rejection({{0, 0}, {1, 0}, {5, 5}, {6, 5}}, {{0, 1}, {2, 3}});
-  CHECK(e.defect() == FigureDefect::Disconnected);
-  CHECK_THAT(e.what(), Equals("the figure is disconnected: it has 2 components, and vertex 2 is not connected to vertex 0"));
-  e = rejection({{0, 0}, {1, 0}}, {});
-  CHECK(e.defect() == FigureDefect::Disconnected);
+TEST_CASE("a figure may have several parts, lone vertices included", "[make_stick_figure]") {
+  // Issue 14: two strokes, two dots, a triangle and a dot.
+  CHECK(is_valid(make_stick_figure({{0, 0}, {1, 0}, {5, 5}, {6, 5}}, {{0, 1}, {2, 3}})));
+  CHECK(is_valid(make_stick_figure({{0, 0}, {1, 0}}, {})));
+  CHECK(is_valid(make_stick_figure({{0, 0}, {4, 0}, {0, 4}, {1, 1}}, {{0, 1}, {1, 2}, {2, 0}})));
+  // Parts are checked against each other like edges of one part.
+  auto e = rejection({{0, 0}, {4, 0}, {0, 4}, {2, -1}, {2, 1}}, {{0, 1}, {1, 2}, {2, 0}, {3, 4}});
+  CHECK(e.defect() == FigureDefect::CrossingEdges);
+  e = rejection({{0, 0}, {4, 0}, {0, 4}, {2, 0}}, {{0, 1}, {1, 2}, {2, 0}});
+  CHECK(e.defect() == FigureDefect::VertexOnEdge);
+  CHECK(e.vertices() == std::vector<int>{3});
 }
 
 TEST_CASE("validate re-checks a figure built by hand", "[make_stick_figure]") {

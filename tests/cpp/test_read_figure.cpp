@@ -324,7 +324,6 @@ TEST_CASE("read_figure_file: figures that break the rules", "[figure_io]") {
       {"crossing_edges.json", FigureDefect::CrossingEdges, {}, {3, 4}, "edges 3 (0-2) and 4 (1-3)"},
       {"collinear_overlap.json", FigureDefect::OverlappingEdges, {}, {0, 3}, "edges 0 (0-1) and 3 (0-4)"},
       {"vertex_on_edge.json", FigureDefect::VertexOnEdge, {4}, {0}, "vertex 4"},
-      {"disconnected.json", FigureDefect::Disconnected, {0, 4}, {}, "vertex 4"},
   };
   for (const Case& c : cases) {
     const std::string path = malformed(c.file);

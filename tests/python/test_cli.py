@@ -39,6 +39,7 @@ INCOMPATIBLE = {
     "polygon_reversed": r"mirror|exterior",    # hexagon traversed clockwise
     "edge_set_differs": r"\b1-2\b|\bedge",     # crossbar 1-2 replaced by 3-4
     "vertex_count_differs": r"\b6\b.*\b5\b|\b5\b.*\b6\b",  # hexagon vs pentagon
+    "nesting_differs": r"part 1\b.*nest|nest.*part 1\b",  # the inner ring moved out
 }
 
 

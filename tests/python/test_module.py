@@ -125,8 +125,8 @@ DEFECTS = [
      [0, 1], "overlap"),
     ("vertex_on_edge", [[0, 0], [2, 0], [1, 0], [1, 1]], [[0, 1], [2, 3]], "vertex_on_edge",
      [2], [0], "vertex 2"),
-    ("disconnected", [[0, 0], [1, 0], [5, 5], [6, 5]], [[0, 1], [2, 3]], "disconnected", [0, 2],
-     [], "disconnected"),
+    ("part_crosses_part", [[0, 0], [4, 0], [0, 4], [2, -1], [2, 1]], [[0, 1], [1, 2], [2, 0], [3, 4]],
+     "crossing_edges", [], [0, 3], "cross"),
 ]
 
 

@@ -1,17 +1,11 @@
 // The annulus cut (paper, section 3, Algorithm 3, step 3); see annulus_cut.h.
 #include "stickmorph/internal/annulus_cut.h"
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_face_base_with_info_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <memory>
-#include <queue>
 
 #include "stickmorph/errors.h"
 #include "stickmorph/exact_predicates.h"
@@ -70,125 +64,20 @@ bool segment_is_free(const StickFigure& f, int v, const Vec2& q) {
   return true;
 }
 
-// Routing through the unbounded region of one figure: a constrained
-// triangulation of the figure and the enclosure, and a shortest dual path
-// from the corner's wedge to the enclosure vertex. The path's bends are the
-// midpoints of the edges it crosses, so it stays inside the triangles it
-// walks through and never meets the figure.
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
-using FaceBase = CGAL::Constrained_triangulation_face_base_2<Kernel, CGAL::Triangulation_face_base_with_info_2<int, Kernel>>;
-using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
-using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::No_constraint_intersection_tag>;
-
-class CdtRouter {
- public:
-  CdtRouter(const StickFigure& f, const std::vector<Vec2>& enclosure) {
-    const int n = int(f.vertices.size());
-    for (int v = 0; v < n; ++v) {
-      auto h = cdt_.insert(Kernel::Point_2(f.vertices[v][0], f.vertices[v][1]));
-      h->info() = v;
-      handle_.push_back(h);
-    }
-    for (std::size_t j = 0; j < enclosure.size(); ++j) {
-      auto h = cdt_.insert(Kernel::Point_2(enclosure[j][0], enclosure[j][1]));
-      h->info() = n + int(j);
-      handle_.push_back(h);
-    }
-    for (const Edge& e : f.edges) cdt_.insert_constraint(handle_[e[0]], handle_[e[1]]);
-    for (std::size_t j = 0; j < enclosure.size(); ++j)
-      cdt_.insert_constraint(handle_[n + j], handle_[n + (j + 1) % enclosure.size()]);
-  }
-
-  // Bends of a route from the corner to enclosure vertex `q` (node n + j),
-  // or nothing if none exists.
-  bool route(const ExteriorCorner& corner, int enclosure_node, std::vector<Vec2>& bends) {
-    const auto v = handle_[corner.vertex];
-    // Faces in the corner's wedge: rotate counter-clockwise around v from the
-    // outgoing edge until a constraint (the incoming edge) closes the wedge.
-    std::vector<Cdt::Face_handle> start;
-    Cdt::Face_circulator fc = cdt_.incident_faces(v), done = fc;
-    if (corner.next < 0) {
-      do start.push_back(fc); while (++fc != done);
-    } else {
-      Cdt::Face_handle f;
-      int i;
-      const auto nh = handle_[corner.next];
-      if (!cdt_.is_edge(v, nh, f, i)) return false;
-      if (f->vertex(Cdt::ccw(i)) != v) {
-        Cdt::Face_handle g = f->neighbor(i);
-        f = g;
-      }
-      for (int guard = 0; guard < 10000; ++guard) {
-        start.push_back(f);
-        const int j = f->index(v);
-        if (cdt_.is_constrained({f, Cdt::ccw(j)})) break;
-        f = f->neighbor(Cdt::ccw(j));
-      }
-    }
-    // Breadth-first search across unconstrained edges.
-    std::map<Cdt::Face_handle, std::pair<Cdt::Face_handle, int>> came_from;
-    std::queue<Cdt::Face_handle> queue;
-    for (auto f : start)
-      if (!cdt_.is_infinite(f)) {
-        came_from[f] = {Cdt::Face_handle(), -1};
-        queue.push(f);
-      }
-    Cdt::Face_handle goal;
-    while (!queue.empty() && goal == Cdt::Face_handle()) {
-      Cdt::Face_handle f = queue.front();
-      queue.pop();
-      for (int j = 0; j < 3; ++j)
-        if (f->vertex(j)->info() == enclosure_node) goal = f;
-      if (goal != Cdt::Face_handle()) break;
-      for (int j = 0; j < 3; ++j) {
-        if (cdt_.is_constrained({f, j})) continue;
-        Cdt::Face_handle g = f->neighbor(j);
-        if (cdt_.is_infinite(g) || came_from.count(g)) continue;
-        came_from[g] = {f, j};
-        queue.push(g);
-      }
-    }
-    if (goal == Cdt::Face_handle()) return false;
-    std::vector<Vec2> reversed;
-    for (Cdt::Face_handle f = goal; came_from[f].first != Cdt::Face_handle(); f = came_from[f].first) {
-      const auto [from, j] = came_from[f];
-      const auto a = from->vertex(Cdt::ccw(j))->point(), b = from->vertex(Cdt::cw(j))->point();
-      reversed.push_back({0.5 * (a.x() + b.x()), 0.5 * (a.y() + b.y())});
-    }
-    bends.assign(reversed.rbegin(), reversed.rend());
-    return true;
-  }
-
- private:
-  Cdt cdt_;
-  std::vector<Cdt::Vertex_handle> handle_;
-};
-
 AnnulusRouter::AnnulusRouter(const StickFigure& f, const std::vector<Vec2>& enclosure)
-    : impl_(std::make_unique<CdtRouter>(f, enclosure)) {}
-AnnulusRouter::~AnnulusRouter() = default;
-bool AnnulusRouter::route(const ExteriorCorner& corner, int enclosure_node, std::vector<Vec2>& bends) {
-  return impl_->route(corner, enclosure_node, bends);
-}
+    : router_([&] {
+        // The figure's vertices, then the enclosure's (node n + j); the
+        // figure's edges and the enclosure's sides as constraints.
+        const int n = int(f.vertices.size()), k = int(enclosure.size());
+        std::vector<Vec2> nodes = f.vertices;
+        nodes.insert(nodes.end(), enclosure.begin(), enclosure.end());
+        std::vector<Edge> constraints = f.edges;
+        for (int j = 0; j < k; ++j) constraints.push_back({n + j, n + (j + 1) % k});
+        return CornerRouter(nodes, constraints);
+      }()) {}
 
-// Adds points on the longest segments until the path has `count` bends;
-// the added bends are straight (section 3: redundant vertices on a straight
-// cut are harmless to the triangulation).
-void pad_bends(const Vec2& from, const Vec2& to, std::vector<Vec2>& bends, int count) {
-  while (int(bends.size()) < count) {
-    std::vector<Vec2> path{from};
-    path.insert(path.end(), bends.begin(), bends.end());
-    path.push_back(to);
-    std::size_t longest = 0;
-    double best = -1;
-    for (std::size_t i = 0; i + 1 < path.size(); ++i) {
-      const double len = std::hypot(path[i + 1][0] - path[i][0], path[i + 1][1] - path[i][1]);
-      if (len > best) best = len, longest = i;
-    }
-    const Vec2 mid{0.5 * (path[longest][0] + path[longest + 1][0]), 0.5 * (path[longest][1] + path[longest + 1][1])};
-    bends.insert(bends.begin() + long(longest), mid);
-  }
+bool AnnulusRouter::route(const ExteriorCorner& corner, int enclosure_node, std::vector<Vec2>& bends) const {
+  return router_.route({corner.vertex, corner.next, corner.prev}, {enclosure_node, -1, -1}, bends);
 }
 
 AnnulusCut choose_annulus_cut(const StickFigure& source, const Decomposition& source_dec, const StickFigure& target,

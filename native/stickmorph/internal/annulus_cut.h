@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "stickmorph/decomposition.h"
+#include "stickmorph/internal/corner_router.h"
 #include "stickmorph/stick_figure.h"
 
 namespace stickmorph::internal {
@@ -47,30 +48,19 @@ bool corner_admits(const StickFigure& f, const ExteriorCorner& c, const Vec2& q)
 /// figure (touching only edges at v itself)?
 bool segment_is_free(const StickFigure& f, int v, const Vec2& q);
 
-class CdtRouter;
-
-/// Routing through the unbounded region of one figure: a constrained
-/// triangulation (CGAL, exact predicates) of the figure and the enclosure,
-/// built once, and for each request a shortest dual path (fewest triangles)
-/// from the corner's wedge to the enclosure vertex. The path's bends are
-/// the midpoints of the edges it crosses, so it stays inside the triangles
-/// it walks through and never meets the figure.
+/// Routing through the unbounded region of one figure (corner_router.h):
+/// the figure and the enclosure triangulated once, and for each request a
+/// shortest dual path from the corner's wedge to the enclosure vertex.
 class AnnulusRouter {
  public:
   AnnulusRouter(const StickFigure& f, const std::vector<Vec2>& enclosure);
-  ~AnnulusRouter();
   /// Bends of a route from `corner` to enclosure node `enclosure_node`
   /// (n + j for enclosure vertex j), or false if none exists.
-  bool route(const ExteriorCorner& corner, int enclosure_node, std::vector<Vec2>& bends);
+  bool route(const ExteriorCorner& corner, int enclosure_node, std::vector<Vec2>& bends) const;
 
  private:
-  std::unique_ptr<CdtRouter> impl_;  // keeps CGAL out of this header
+  CornerRouter router_;
 };
-
-/// Adds points on the longest segments of the path from -> bends -> to
-/// until it has `count` bends; the added bends are straight (section 3:
-/// redundant vertices on a straight cut are harmless to the triangulation).
-void pad_bends(const Vec2& from, const Vec2& to, std::vector<Vec2>& bends, int count);
 
 /// The chosen cut: from `corner` of the source's exterior sequence to
 /// enclosure vertex `enclosure_index`, through source_bends in the source

@@ -53,6 +53,10 @@ struct MorphProvenance {
   double correspond_ms = 0;   ///< wall-clock time of the matching, with a correspondence
   double triangulate_ms = 0;  ///< wall-clock time of the triangulation
   double morph_ms = 0;        ///< wall-clock time of the morph
+  /// The figure's parts (issue 14), "stats.parts", and the Steiner
+  /// vertices on the bridges that joined them, "stats.bridge_vertices".
+  int parts = 1;
+  int bridge_vertices = 0;
 };
 
 /// The morph file: the figure's edges, `times`, the first n positions of

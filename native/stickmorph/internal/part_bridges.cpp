@@ -1,0 +1,271 @@
+// Bridges between the parts of a figure (issue 14); see part_bridges.h.
+#include "stickmorph/internal/part_bridges.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <set>
+#include <utility>
+
+#include "stickmorph/compatibility.h"
+#include "stickmorph/errors.h"
+#include "stickmorph/exact_predicates.h"
+#include "stickmorph/figure_parts.h"
+#include "stickmorph/internal/corner_router.h"
+
+namespace stickmorph::internal {
+namespace {
+
+// Corner k of sequence s: where the walk arrives at vertices[k] and leaves.
+RouteCorner corner_of(const StickFigure& f, const Decomposition& d, int s, int k) {
+  const CyclicSequence& seq = d.sequences[std::size_t(s)];
+  RouteCorner c;
+  c.vertex = seq.vertices[std::size_t(k)];
+  if (seq.darts.empty()) return c;  // a lone vertex: every direction
+  const std::size_t m = seq.vertices.size();
+  c.next = seq.vertices[(std::size_t(k) + 1) % m];
+  c.prev = dart_tail(f, seq.darts[std::size_t(k)]);
+  return c;
+}
+
+// One figure with the bridges made so far: nodes (the figure's vertices,
+// then the bends) and the segments that a new bridge must not meet.
+struct Side {
+  std::vector<Vec2> nodes;
+  std::vector<Edge> segments;
+  std::vector<int> degree;  // per node
+  CornerRouter router;
+
+  Side(const StickFigure& f) : nodes(f.vertices), segments(f.edges), degree(f.vertices.size(), 0), router(f.vertices, f.edges) {
+    for (const Edge& e : f.edges) ++degree[std::size_t(e[0])], ++degree[std::size_t(e[1])];
+  }
+
+  // Exact: does the segment from p to q (nodes p_node and q_node, or -1 for
+  // a free point) meet nothing but the segments at its own end nodes, and
+  // those only there?
+  bool clear(int p_node, const Vec2& p, int q_node, const Vec2& q) const {
+    const double lo_x = std::min(p[0], q[0]), hi_x = std::max(p[0], q[0]);
+    const double lo_y = std::min(p[1], q[1]), hi_y = std::max(p[1], q[1]);
+    for (const Edge& e : segments) {
+      const Vec2& a = nodes[std::size_t(e[0])];
+      const Vec2& b = nodes[std::size_t(e[1])];
+      if (std::max(a[0], b[0]) < lo_x || std::min(a[0], b[0]) > hi_x || std::max(a[1], b[1]) < lo_y ||
+          std::min(a[1], b[1]) > hi_y)
+        continue;
+      const SegmentContact contact = segment_contact(p, q, a, b);
+      if (contact == SegmentContact::Disjoint) continue;
+      const bool shares = (p_node >= 0 && (e[0] == p_node || e[1] == p_node)) ||
+                          (q_node >= 0 && (e[0] == q_node || e[1] == q_node));
+      if (contact == SegmentContact::Touching && shares) continue;
+      return false;
+    }
+    for (std::size_t w = 0; w < nodes.size(); ++w)
+      if (degree[w] == 0 && int(w) != p_node && int(w) != q_node && on_segment(nodes[w], p, q)) return false;
+    return true;
+  }
+
+  // Exact: does the direction from the corner's vertex to q leave it
+  // strictly inside the corner's wedge?
+  bool admits(const RouteCorner& c, const Vec2& q) const {
+    if (c.next < 0) return true;
+    return strictly_inside_corner(nodes[std::size_t(c.vertex)], nodes[std::size_t(c.next)],
+                                  nodes[std::size_t(c.prev)], c.next == c.prev, q);
+  }
+
+  bool straight(const RouteCorner& from, const RouteCorner& to) const {
+    const Vec2& p = nodes[std::size_t(from.vertex)];
+    const Vec2& q = nodes[std::size_t(to.vertex)];
+    return admits(from, q) && admits(to, p) && clear(from.vertex, p, to.vertex, q);
+  }
+
+  // A routed path, shortened greedily: from each point, the farthest later
+  // point that a valid straight shortcut reaches (only a few are tried, so
+  // that a long path costs linear work).
+  bool routed(const RouteCorner& from, const RouteCorner& to, std::vector<Vec2>& bends) const {
+    std::vector<Vec2> raw;
+    if (!router.route(from, to, raw)) return false;
+    std::vector<Vec2> path{nodes[std::size_t(from.vertex)]};
+    path.insert(path.end(), raw.begin(), raw.end());
+    path.push_back(nodes[std::size_t(to.vertex)]);
+    const std::size_t last = path.size() - 1;
+    constexpr std::size_t kTries = 24;
+    bends.clear();
+    std::size_t i = 0;
+    while (i < last) {
+      std::size_t next = i + 1;
+      const std::size_t lowest = i + 2;
+      for (std::size_t j = last; j >= lowest && j + kTries > last; --j) {
+        const int p_node = i == 0 ? from.vertex : -1;
+        const int q_node = j == last ? to.vertex : -1;
+        if (i == 0 && !admits(from, path[j])) continue;
+        if (j == last && !admits(to, path[i])) continue;
+        if (clear(p_node, path[i], q_node, path[j])) {
+          next = j;
+          break;
+        }
+      }
+      if (next < last) bends.push_back(path[next]);
+      i = next;
+    }
+    return true;
+  }
+
+  void add(int from, int to, const std::vector<Vec2>& bends) {
+    int previous = from;
+    for (const Vec2& b : bends) {
+      const int node = int(nodes.size());
+      nodes.push_back(b);
+      degree.push_back(0);
+      if (router.add_node(b) != node) throw InternalError("part bridges: the router's nodes are out of step");
+      link(previous, node);
+      previous = node;
+    }
+    link(previous, to);
+  }
+
+  void link(int a, int b) {
+    segments.push_back({a, b});
+    ++degree[std::size_t(a)], ++degree[std::size_t(b)];
+    router.add_constraint(a, b);
+  }
+};
+
+double distance(const Vec2& a, const Vec2& b) { return std::hypot(a[0] - b[0], a[1] - b[1]); }
+
+struct CornerRef {
+  int sequence, index;
+};
+
+}  // namespace
+
+BridgedFigures bridge_parts(const StickFigure& source, const Decomposition& dec, const StickFigure& target) {
+  const FigureParts parts = figure_parts(source);
+  const PartNesting nesting = part_nesting(source, dec, parts);
+  const int count = parts.count();
+  Side sides[2] = {Side(source), Side(target)};
+  BridgedFigures result;
+
+  // Parts from the outside in; the first part at the top level is the root.
+  std::vector<int> order(static_cast<std::size_t>(count));
+  for (int p = 0; p < count; ++p) order[std::size_t(p)] = p;
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return nesting.enclosing[std::size_t(a)].size() < nesting.enclosing[std::size_t(b)].size();
+  });
+  std::vector<bool> bridged(std::size_t(count), false);
+  std::set<std::pair<int, int>> used;  // corners (vertex, next) that hold a bridge
+  auto key = [](const RouteCorner& c) { return std::make_pair(c.vertex, c.next); };
+
+  for (int part : order) {
+    const int parent = nesting.parent_part[std::size_t(part)];
+    const int parent_face = nesting.parent_sequence[std::size_t(part)];
+    // Where the bridge may land: the parent's face and the exteriors of the
+    // parts already bridged that lie directly in the same face.
+    std::vector<int> goal_sequences;
+    if (parent >= 0) goal_sequences.push_back(parent_face);
+    for (int other = 0; other < count; ++other)
+      if (other != part && bridged[std::size_t(other)] && nesting.parent_part[std::size_t(other)] == parent &&
+          nesting.parent_sequence[std::size_t(other)] == parent_face)
+        goal_sequences.push_back(dec.exterior_of_part[std::size_t(other)]);
+    bridged[std::size_t(part)] = true;
+    if (goal_sequences.empty()) {
+      if (parent >= 0) throw InternalError("part bridges: part " + std::to_string(part) + " has no face to join");
+      continue;  // the root
+    }
+
+    std::vector<RouteCorner> starts, goals;
+    const int own = dec.exterior_of_part[std::size_t(part)];
+    for (std::size_t k = 0; k < dec.sequences[std::size_t(own)].vertices.size(); ++k) {
+      const RouteCorner c = corner_of(source, dec, own, int(k));
+      if (!used.count(key(c))) starts.push_back(c);
+    }
+    for (int s : goal_sequences)
+      for (std::size_t k = 0; k < dec.sequences[std::size_t(s)].vertices.size(); ++k) {
+        const RouteCorner c = corner_of(source, dec, s, int(k));
+        if (!used.count(key(c))) goals.push_back(c);
+      }
+    if (starts.empty() || goals.empty())
+      throw InternalError("part bridges: every corner of " + describe_part(parts, part) + " or of its face holds a bridge");
+
+    // The nearest corner pairs (in both figures together), sampled evenly
+    // where there are very many.
+    constexpr std::size_t kMaxPairs = 250000;
+    const std::size_t stride =
+        std::max<std::size_t>(1, std::size_t(std::ceil(std::sqrt(double(starts.size()) * double(goals.size()) / kMaxPairs))));
+    std::vector<std::pair<double, std::pair<std::size_t, std::size_t>>> pairs;
+    for (std::size_t a = 0; a < starts.size(); a += stride)
+      for (std::size_t b = 0; b < goals.size(); b += stride) {
+        double cost = 0;
+        for (const Side& side : sides)
+          cost += distance(side.nodes[std::size_t(starts[a].vertex)], side.nodes[std::size_t(goals[b].vertex)]);
+        pairs.push_back({cost, {a, b}});
+      }
+    constexpr std::size_t kStraightTries = 48, kRoutedTries = 6;
+    std::partial_sort(pairs.begin(), pairs.begin() + std::ptrdiff_t(std::min(pairs.size(), kStraightTries)),
+                      pairs.end());
+    bool done = false;
+    for (std::size_t t = 0; t < pairs.size() && t < kStraightTries && !done; ++t) {
+      const RouteCorner& from = starts[pairs[t].second.first];
+      const RouteCorner& to = goals[pairs[t].second.second];
+      if (sides[0].straight(from, to) && sides[1].straight(from, to)) {
+        for (Side& side : sides) side.add(from.vertex, to.vertex, {});
+        used.insert(key(from));
+        used.insert(key(to));
+        done = true;
+      }
+    }
+    if (!done) {
+      // Routed in each figure on its own; the fewest bends win.
+      std::size_t best_bends = std::numeric_limits<std::size_t>::max();
+      std::vector<Vec2> best[2];
+      RouteCorner best_from, best_to;
+      for (std::size_t t = 0; t < pairs.size() && t < kRoutedTries; ++t) {
+        const RouteCorner& from = starts[pairs[t].second.first];
+        const RouteCorner& to = goals[pairs[t].second.second];
+        std::vector<Vec2> bends[2];
+        if (!sides[0].routed(from, to, bends[0]) || !sides[1].routed(from, to, bends[1])) continue;
+        const std::size_t most = std::max(bends[0].size(), bends[1].size());
+        if (most < best_bends) {
+          best_bends = most;
+          best[0] = std::move(bends[0]);
+          best[1] = std::move(bends[1]);
+          best_from = from;
+          best_to = to;
+        }
+      }
+      if (best_bends == std::numeric_limits<std::size_t>::max())
+        throw InternalError("part bridges: no path joins " + describe_part(parts, part) +
+                            " to the face it lies in, although the figures nest alike");
+      for (int s = 0; s < 2; ++s) {
+        pad_bends(sides[s].nodes[std::size_t(best_from.vertex)], sides[s].nodes[std::size_t(best_to.vertex)], best[s],
+                  int(best_bends));
+        sides[s].add(best_from.vertex, best_to.vertex, best[s]);
+      }
+      used.insert(key(best_from));
+      used.insert(key(best_to));
+      result.bends += int(best_bends);
+    }
+    ++result.bridges;
+  }
+
+  // The bridged pair, checked exactly: both valid figures of one part and
+  // compatible (the construction promises it; rounding of a bend could
+  // break it).
+  std::vector<std::array<std::int64_t, 2>> edges;
+  for (const Edge& e : sides[0].segments) edges.push_back({e[0], e[1]});
+  try {
+    result.source = make_stick_figure(sides[0].nodes, edges, source.name);
+    result.target = make_stick_figure(sides[1].nodes, edges, target.name);
+  } catch (const InvalidFigureError& error) {
+    throw VerificationError(std::string("bridging the figure's parts: a bridge is not valid in exact arithmetic: ") +
+                            error.what());
+  }
+  if (figure_parts(result.source).count() != 1)
+    throw InternalError("part bridges: the bridged figure still has several parts");
+  const CompatibilityReport report = check_compatibility(result.source, result.target);
+  if (!report.compatible())
+    throw VerificationError("bridging the figure's parts: the bridged figures are not compatible: " + report.reason);
+  return result;
+}
+
+}  // namespace stickmorph::internal
