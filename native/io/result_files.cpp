@@ -189,10 +189,8 @@ std::string morph_file_json(const StickFigure& source, const std::vector<double>
   out.value(triangulation ? int(triangulation->triangles.size()) : 0);
   out.key("parts");
   out.value(how.parts);
-  if (triangulation) {
-    out.key("bridge_vertices");
-    out.value(how.bridge_vertices);
-  }
+  out.key("bridge_vertices");
+  out.value(how.bridge_vertices);
   out.key("milliseconds");
   out.begin_object();
   out.key("triangulate");

@@ -18,6 +18,7 @@
 #include "stickmorph/decomposition.h"
 #include "stickmorph/errors.h"
 #include "stickmorph/exact_predicates.h"
+#include "stickmorph/figure_parts.h"
 
 namespace stickmorph {
 namespace {
@@ -963,8 +964,11 @@ VertexPin parse_vertex_pin(const std::string& text) {
   return pin;
 }
 
-FigureCorrespondence correspond_figures(const StickFigure& source, const StickFigure& target,
-                                        const CorrespondenceOptions& options) {
+namespace {
+
+// One connected figure matched to another (steps 1 to 4 of the header).
+FigureCorrespondence correspond_connected(const StickFigure& source, const StickFigure& target,
+                                          const CorrespondenceOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const Skeleton s = make_skeleton(source);
   const Skeleton t = make_skeleton(target);
@@ -980,6 +984,7 @@ FigureCorrespondence correspond_figures(const StickFigure& source, const StickFi
   if (source.edges.empty()) {
     // Two single vertices (compare_invariants): they match.
     chosen.node_image = {0};
+    chosen.fit.residual = 0;  // a point fits a point exactly
     result.candidates = 1;
   } else if (s.is_loop()) {
     chosen = match_loops(s, t, chain_pins, result.candidates);
@@ -1115,6 +1120,352 @@ FigureCorrespondence correspond_figures(const StickFigure& source, const StickFi
     throw InternalError("correspond: the matched figures are not compatible: " + report.reason);
   result.milliseconds = milliseconds_since(start);
   return result;
+}
+
+}  // namespace
+
+// ------------------------------------------------------ several parts ---
+//
+// Issue 14: figures of several parts are matched part to part. The parts
+// are paired first (same shape class, same nesting depth, nearest place in
+// the figure), each pair is matched as above, and the matched parts are put
+// together: the source's n vertices first, then every dummy in target order,
+// as for one part. The whole matched pair is then checked, nesting included.
+
+namespace {
+
+// One part as a figure of its own, with the way back to the whole figure.
+struct PartFigure {
+  StickFigure figure;
+  std::vector<int> global_vertex;  // local vertex -> figure vertex
+  std::vector<int> global_edge;    // local edge -> figure edge
+};
+
+PartFigure part_figure(const StickFigure& whole, const FigureParts& parts, int part) {
+  PartFigure result;
+  result.global_vertex = parts.vertices[std::size_t(part)];
+  std::vector<int> local(whole.vertices.size(), -1);
+  for (std::size_t k = 0; k < result.global_vertex.size(); ++k) {
+    local[std::size_t(result.global_vertex[k])] = int(k);
+    result.figure.vertices.push_back(whole.vertices[std::size_t(result.global_vertex[k])]);
+  }
+  // Same order and direction as in the whole figure, so that a dummy's
+  // fraction along its edge means the same in both.
+  for (std::size_t e = 0; e < whole.edges.size(); ++e)
+    if (local[std::size_t(whole.edges[e][0])] >= 0) {
+      result.figure.edges.push_back({local[std::size_t(whole.edges[e][0])], local[std::size_t(whole.edges[e][1])]});
+      result.global_edge.push_back(int(e));
+    }
+  result.figure.name = whole.name;
+  return result;
+}
+
+// What a matching of two parts needs (compare_invariants): the number of
+// independent cycles and the degrees of the nodes (vertices of degree
+// other than 2), and nothing but a vertex for a lone vertex.
+struct PartShape {
+  int cycles = 0;
+  std::vector<int> node_degrees;  // sorted
+  bool operator==(const PartShape& other) const {
+    return cycles == other.cycles && node_degrees == other.node_degrees;
+  }
+};
+
+PartShape part_shape(const StickFigure& part) {
+  PartShape shape;
+  shape.cycles = int(part.edges.size()) - int(part.vertices.size()) + 1;
+  std::vector<int> degree(part.vertices.size(), 0);
+  for (const Edge& e : part.edges) ++degree[std::size_t(e[0])], ++degree[std::size_t(e[1])];
+  for (int d : degree)
+    if (d != 2) shape.node_degrees.push_back(d);
+  std::sort(shape.node_degrees.begin(), shape.node_degrees.end());
+  return shape;
+}
+
+std::string describe_shape(const PartShape& shape, std::size_t vertices) {
+  if (vertices == 1) return "a lone vertex";
+  int ends = 0;
+  for (int d : shape.node_degrees) ends += d == 1;
+  std::string text = plural(shape.cycles, "loop", "loops") + ", " + plural(ends, "end", "ends");
+  const std::size_t junctions = shape.node_degrees.size() - std::size_t(ends);
+  if (junctions) text += ", " + plural((long long)junctions, "junction", "junctions");
+  return text;
+}
+
+// Where a part is in its figure: the centre and the diagonal of its
+// bounding box, relative to the whole figure's box (centre at 0, diagonal
+// 1). Boxes do not depend on how densely a stroke is sampled.
+struct PartPlace {
+  Vec2 center{0, 0};
+  double size = 0;
+};
+
+std::vector<PartPlace> part_places(const StickFigure& whole, const FigureParts& parts) {
+  auto box = [&](const std::vector<int>& vertices, Vec2& lo, Vec2& hi) {
+    lo = hi = whole.vertices[std::size_t(vertices.front())];
+    for (int v : vertices)
+      for (int c = 0; c < 2; ++c) {
+        lo[std::size_t(c)] = std::min(lo[std::size_t(c)], whole.vertices[std::size_t(v)][std::size_t(c)]);
+        hi[std::size_t(c)] = std::max(hi[std::size_t(c)], whole.vertices[std::size_t(v)][std::size_t(c)]);
+      }
+  };
+  std::vector<int> all(whole.vertices.size());
+  std::iota(all.begin(), all.end(), 0);
+  Vec2 lo, hi;
+  box(all, lo, hi);
+  const Vec2 center{0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])};
+  double diagonal = distance(lo, hi);
+  if (!(diagonal > 0)) diagonal = 1;
+  std::vector<PartPlace> places;
+  for (const std::vector<int>& vertices : parts.vertices) {
+    Vec2 a, b;
+    box(vertices, a, b);
+    PartPlace place;
+    place.center = {(0.5 * (a[0] + b[0]) - center[0]) / diagonal, (0.5 * (a[1] + b[1]) - center[1]) / diagonal};
+    place.size = distance(a, b) / diagonal;
+    places.push_back(place);
+  }
+  return places;
+}
+
+// The assignment of least total cost (the Hungarian method with
+// potentials, O(k^3)): row i gets column result[i].
+std::vector<int> least_cost_assignment(const std::vector<std::vector<double>>& cost) {
+  const std::size_t k = cost.size();
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  std::vector<double> u(k + 1, 0), v(k + 1, 0);
+  std::vector<std::size_t> p(k + 1, 0), way(k + 1, 0);
+  for (std::size_t i = 1; i <= k; ++i) {
+    p[0] = i;
+    std::size_t j0 = 0;
+    std::vector<double> least(k + 1, kInfinity);
+    std::vector<bool> used(k + 1, false);
+    do {
+      used[j0] = true;
+      const std::size_t i0 = p[j0];
+      double delta = kInfinity;
+      std::size_t j1 = 0;
+      for (std::size_t j = 1; j <= k; ++j)
+        if (!used[j]) {
+          const double reduced = cost[i0 - 1][j - 1] - u[i0] - v[j];
+          if (reduced < least[j]) least[j] = reduced, way[j] = j0;
+          if (least[j] < delta) delta = least[j], j1 = j;
+        }
+      for (std::size_t j = 0; j <= k; ++j)
+        if (used[j]) u[p[j]] += delta, v[j] -= delta;
+        else least[j] -= delta;
+      j0 = j1;
+    } while (p[j0] != 0);
+    do {
+      const std::size_t j1 = way[j0];
+      p[j0] = p[j1];
+      j0 = j1;
+    } while (j0);
+  }
+  std::vector<int> result(k, -1);
+  for (std::size_t j = 1; j <= k; ++j) result[p[j] - 1] = int(j - 1);
+  return result;
+}
+
+std::string without_prefix(const std::string& text, const std::string& prefix) {
+  return text.compare(0, prefix.size(), prefix) == 0 ? text.substr(prefix.size()) : text;
+}
+
+FigureCorrespondence correspond_parts(const StickFigure& source, const StickFigure& target,
+                                      const CorrespondenceOptions& options, const FigureParts& source_parts,
+                                      const FigureParts& target_parts) {
+  const auto start = std::chrono::steady_clock::now();
+  const int k = source_parts.count();
+  if (target_parts.count() != k)
+    topology_differs("the source has " + plural(k, "part", "parts") + " and the target " +
+                     std::to_string(target_parts.count()) + " (parts are the connected pieces of a figure)");
+  const int ns = int(source.vertices.size()), nt = int(target.vertices.size());
+  for (const VertexPin& pin : options.pins) {
+    const std::string name = "pin " + std::to_string(pin.source) + ":" + std::to_string(pin.target);
+    if (pin.source < 0 || pin.source >= ns)
+      throw InvalidArgumentError("correspond: " + name + ": the source has no vertex " + std::to_string(pin.source) +
+                                 " (it has " + plural(ns, "vertex", "vertices") + ")");
+    if (pin.target < 0 || pin.target >= nt)
+      throw InvalidArgumentError("correspond: " + name + ": the target has no vertex " + std::to_string(pin.target) +
+                                 " (it has " + plural(nt, "vertex", "vertices") + ")");
+  }
+
+  std::vector<PartFigure> source_pieces, target_pieces;
+  std::vector<PartShape> source_shapes, target_shapes;
+  for (int p = 0; p < k; ++p) {
+    source_pieces.push_back(part_figure(source, source_parts, p));
+    target_pieces.push_back(part_figure(target, target_parts, p));
+    source_shapes.push_back(part_shape(source_pieces.back().figure));
+    target_shapes.push_back(part_shape(target_pieces.back().figure));
+  }
+  // Nesting depth: how many parts enclose a part. Matched parts must agree.
+  const PartNesting source_nesting = part_nesting(source, decompose(source), source_parts);
+  const PartNesting target_nesting = part_nesting(target, decompose(target), target_parts);
+
+  // Pins pair parts.
+  std::vector<int> forced(std::size_t(k), -1), forced_by(std::size_t(k), -1);
+  std::vector<std::string> forcing_pin(static_cast<std::size_t>(k));
+  for (const VertexPin& pin : options.pins) {
+    const int a = source_parts.part_of_vertex[std::size_t(pin.source)];
+    const int b = target_parts.part_of_vertex[std::size_t(pin.target)];
+    const std::string name = "pin " + std::to_string(pin.source) + ":" + std::to_string(pin.target);
+    if ((forced[std::size_t(a)] >= 0 && forced[std::size_t(a)] != b) ||
+        (forced_by[std::size_t(b)] >= 0 && forced_by[std::size_t(b)] != a))
+      throw IncompatibleFiguresError(Incompatibility::PinsUnsatisfiable,
+                                     "correspond: " + name + " and " +
+                                         forcing_pin[std::size_t(forced[std::size_t(a)] >= 0 ? a : forced_by[std::size_t(b)])] +
+                                         " pair one part of a figure with two parts of the other");
+    forced[std::size_t(a)] = b;
+    forced_by[std::size_t(b)] = a;
+    forcing_pin[std::size_t(a)] = name;
+  }
+
+  const std::vector<PartPlace> source_places = part_places(source, source_parts);
+  const std::vector<PartPlace> target_places = part_places(target, target_parts);
+  // A pairing that cannot match costs more than any that can (kBarred), so
+  // that the assignment uses one only where nothing else is left.
+  constexpr double kBarred = 1e12;
+  std::vector<std::vector<double>> cost(std::size_t(k), std::vector<double>(std::size_t(k), 0.0));
+  for (int a = 0; a < k; ++a)
+    for (int b = 0; b < k; ++b) {
+      const bool possible =
+          source_shapes[std::size_t(a)] == target_shapes[std::size_t(b)] &&
+          source_nesting.enclosing[std::size_t(a)].size() == target_nesting.enclosing[std::size_t(b)].size() &&
+          (forced[std::size_t(a)] < 0 || forced[std::size_t(a)] == b) &&
+          (forced_by[std::size_t(b)] < 0 || forced_by[std::size_t(b)] == a);
+      const PartPlace& x = source_places[std::size_t(a)];
+      const PartPlace& y = target_places[std::size_t(b)];
+      const double dx = x.center[0] - y.center[0], dy = x.center[1] - y.center[1], ds = x.size - y.size;
+      cost[std::size_t(a)][std::size_t(b)] = (possible ? 0.0 : kBarred) + dx * dx + dy * dy + 0.25 * ds * ds;
+    }
+  const std::vector<int> partner = least_cost_assignment(cost);
+  for (int a = 0; a < k; ++a)
+    if (cost[std::size_t(a)][std::size_t(partner[std::size_t(a)])] >= kBarred) {
+      const PartShape& shape = source_shapes[std::size_t(a)];
+      std::string why = "no part of the target is left for " + describe_part(source_parts, a) + " of the source (" +
+                        describe_shape(shape, source_parts.vertices[std::size_t(a)].size()) + ", inside " +
+                        plural((long long)source_nesting.enclosing[std::size_t(a)].size(), "other part", "other parts") +
+                        ") that has its shape and nesting depth";
+      if (forced[std::size_t(a)] >= 0) {
+        why += "; " + forcing_pin[std::size_t(a)] + " pairs it with " + describe_part(target_parts, forced[std::size_t(a)]) +
+               " of the target";
+        throw IncompatibleFiguresError(Incompatibility::PinsUnsatisfiable, "correspond: " + why,
+                                       {source_parts.vertices[std::size_t(a)].front()});
+      }
+      topology_differs(why);
+    }
+
+  // Each pair matched on its own.
+  FigureCorrespondence result;
+  std::vector<FigureCorrespondence> matched(static_cast<std::size_t>(k));
+  std::size_t largest = 0;
+  double weight = 0;
+  for (int a = 0; a < k; ++a) {
+    const int b = partner[std::size_t(a)];
+    const PartFigure& sp = source_pieces[std::size_t(a)];
+    const PartFigure& tp = target_pieces[std::size_t(b)];
+    CorrespondenceOptions local;
+    for (const VertexPin& pin : options.pins)
+      if (source_parts.part_of_vertex[std::size_t(pin.source)] == a) {
+        VertexPin l;
+        l.source = int(std::find(sp.global_vertex.begin(), sp.global_vertex.end(), pin.source) - sp.global_vertex.begin());
+        l.target = int(std::find(tp.global_vertex.begin(), tp.global_vertex.end(), pin.target) - tp.global_vertex.begin());
+        local.pins.push_back(l);
+      }
+    const std::string which = "correspond: " + describe_part(source_parts, a) + " of the source and " +
+                              describe_part(target_parts, b) + " of the target (numbered within each part): ";
+    try {
+      matched[std::size_t(a)] = correspond_connected(sp.figure, tp.figure, local);
+    } catch (const IncompatibleFiguresError& error) {
+      throw IncompatibleFiguresError(error.kind(), which + without_prefix(error.what(), "correspond: "),
+                                     {sp.global_vertex.front()});
+    } catch (const InvalidArgumentError& error) {
+      throw InvalidArgumentError(which + without_prefix(error.what(), "correspond: "));
+    }
+    const FigureCorrespondence& m = matched[std::size_t(a)];
+    result.skeleton_nodes += m.skeleton_nodes;
+    result.skeleton_chains += m.skeleton_chains;
+    result.candidates += m.candidates;
+    // The residual of the whole: the parts' residuals weighted by their
+    // matched vertices.
+    result.residual += m.residual * double(m.source_places.size());
+    weight += double(m.source_places.size());
+    if (sp.figure.vertices.size() > largest) {
+      largest = sp.figure.vertices.size();
+      result.rotation_degrees = m.rotation_degrees;
+    }
+  }
+
+  if (weight > 0) result.residual /= weight;
+
+  // Put together: the source's vertices keep their numbers; the dummies of
+  // every part follow, ordered by the target vertex they stand for.
+  std::vector<std::pair<int, std::pair<int, int>>> dummies;  // (target vertex, (part, local matched index))
+  for (int a = 0; a < k; ++a) {
+    const FigureCorrespondence& m = matched[std::size_t(a)];
+    const PartFigure& tp = target_pieces[std::size_t(partner[std::size_t(a)])];
+    for (std::size_t i = source_pieces[std::size_t(a)].global_vertex.size(); i < m.source_places.size(); ++i)
+      dummies.push_back({tp.global_vertex[std::size_t(m.target_places[i].vertex)], {a, int(i)}});
+  }
+  std::sort(dummies.begin(), dummies.end());
+  std::vector<std::vector<int>> global_index(static_cast<std::size_t>(k));
+  for (int a = 0; a < k; ++a) {
+    global_index[std::size_t(a)] = source_pieces[std::size_t(a)].global_vertex;
+    global_index[std::size_t(a)].resize(matched[std::size_t(a)].source_places.size(), -1);
+  }
+  for (std::size_t d = 0; d < dummies.size(); ++d)
+    global_index[std::size_t(dummies[d].second.first)][std::size_t(dummies[d].second.second)] = ns + int(d);
+  const std::size_t m_total = std::size_t(ns) + dummies.size();
+  std::vector<Vec2> source_positions(m_total), target_positions(m_total);
+  result.source_places.resize(m_total);
+  result.target_places.resize(m_total);
+  std::vector<std::array<std::int64_t, 2>> edges;
+  auto globalise = [](MatchedPlace place, const PartFigure& piece) {
+    if (place.vertex >= 0) place.vertex = piece.global_vertex[std::size_t(place.vertex)];
+    if (place.edge >= 0) place.edge = piece.global_edge[std::size_t(place.edge)];
+    return place;
+  };
+  for (int a = 0; a < k; ++a) {
+    const FigureCorrespondence& m = matched[std::size_t(a)];
+    const PartFigure& sp = source_pieces[std::size_t(a)];
+    const PartFigure& tp = target_pieces[std::size_t(partner[std::size_t(a)])];
+    const std::vector<int>& index = global_index[std::size_t(a)];
+    for (std::size_t i = 0; i < m.source_places.size(); ++i) {
+      const std::size_t g = std::size_t(index[i]);
+      source_positions[g] = m.source.vertices[i];
+      target_positions[g] = m.target.vertices[i];
+      result.source_places[g] = globalise(m.source_places[i], sp);
+      result.target_places[g] = globalise(m.target_places[i], tp);
+    }
+    for (const Edge& e : m.source.edges) edges.push_back({index[std::size_t(e[0])], index[std::size_t(e[1])]});
+  }
+  try {
+    result.source = make_stick_figure(std::move(source_positions), edges, source.name);
+    result.target = make_stick_figure(std::move(target_positions), edges, target.name);
+  } catch (const InvalidFigureError& error) {
+    throw InternalError(std::string("correspond: the matched parts do not make a valid figure: ") + error.what());
+  }
+  // Each part pair is compatible by construction; the nesting is the pair's
+  // own (the matched part i is the source's part i), and is checked here.
+  const CompatibilityReport report = check_compatibility(result.source, result.target);
+  if (report.kind == Incompatibility::NestingDiffers)
+    throw IncompatibleFiguresError(Incompatibility::NestingDiffers,
+                                   "correspond: with the parts matched by shape and place, " + report.reason +
+                                       " (vertices of the matched figure)",
+                                   report.vertices);
+  if (!report.compatible())
+    throw InternalError("correspond: the matched figures are not compatible: " + report.reason);
+  result.milliseconds = milliseconds_since(start);
+  return result;
+}
+
+}  // namespace
+
+FigureCorrespondence correspond_figures(const StickFigure& source, const StickFigure& target,
+                                        const CorrespondenceOptions& options) {
+  const FigureParts source_parts = figure_parts(source), target_parts = figure_parts(target);
+  if (source_parts.count() == 1 && target_parts.count() == 1) return correspond_connected(source, target, options);
+  return correspond_parts(source, target, options, source_parts, target_parts);
 }
 
 bool is_valid(const FigureCorrespondence& c, const StickFigure& source, const StickFigure& target) {

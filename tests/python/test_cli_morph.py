@@ -42,10 +42,11 @@ PAIR_IDS = [name for _, name in PAIRS]
 
 # The stats each kind of morph documents (FORMAT.md and docs/CLI.md); the
 # document may grow more ("extend freely"), so these are checked as subsets.
-MORPH_STATS_BARYCENTRIC = {"steiner_vertices", "triangles", "milliseconds", "method", "steiner_method",
-                           "enclosure_sides", "weights", "verified", "refined_frames"}
+MORPH_STATS_BARYCENTRIC = {"steiner_vertices", "triangles", "parts", "bridge_vertices", "milliseconds", "method",
+                           "steiner_method", "enclosure_sides", "weights", "verified", "refined_frames"}
 MORPH_STATS_RIGID = MORPH_STATS_BARYCENTRIC | {"factorizations", "rigid"}
-MORPH_STATS_LINEAR = {"steiner_vertices", "triangles", "milliseconds", "method", "invalid_frames"}
+MORPH_STATS_LINEAR = {"steiner_vertices", "triangles", "parts", "bridge_vertices", "milliseconds", "method",
+                      "invalid_frames"}
 TRIANGULATION_KEYS = {"figure_vertices", "enclosure_vertices", "steiner_vertices", "source", "target",
                       "triangles"}
 

@@ -337,7 +337,9 @@ def check_triangulation(tri, source, target, edges, similarity=None):
         assert (i, j) in darts or (j, i) in darts, (i, j)
 
     stats = tri["stats"]
-    assert set(stats) == {"interior_faces", "cut_bends", "interior_steiner", "min_angle"}
+    assert set(stats) == {"interior_faces", "cut_bends", "interior_steiner", "min_angle", "parts", "bridges",
+                          "bridge_bends"}
+    assert stats["bridges"] == stats["parts"] - 1 and 0 <= stats["bridge_bends"]
     interior = [f for f in stickmorph.decompose(source, edges) if not f["exterior"]]
     assert stats["interior_faces"] == len(interior)
     assert 0 <= stats["cut_bends"] and 0 <= stats["interior_steiner"]
@@ -373,7 +375,7 @@ def check_morph(result, source, target, edges, frames):
     return topology
 
 
-BARYCENTRIC_STATS = {"steiner_vertices", "triangles", "milliseconds", "method", "steiner_method",
+BARYCENTRIC_STATS = {"steiner_vertices", "triangles", "parts", "bridge_vertices", "milliseconds", "method", "steiner_method",
                      "enclosure_sides", "weights", "verified", "refined_frames", "factorizations"}
 
 
@@ -932,8 +934,8 @@ def test_linear_s_to_u_self_intersects(data_dir):
     assert stats["method"] == "linear"
     assert stats["steiner_vertices"] == 0 and stats["triangles"] == 0
     assert stats["refined_frames"] == 0 and stats["factorizations"] == 0
-    assert set(stats) == {"steiner_vertices", "triangles", "milliseconds", "method", "refined_frames",
-                          "factorizations", "invalid_frames"}
+    assert set(stats) == {"steiner_vertices", "triangles", "parts", "bridge_vertices", "milliseconds", "method",
+                          "refined_frames", "factorizations", "invalid_frames"}
     assert set(stats["milliseconds"]) == {"triangulate", "morph", "factorize", "solve", "verify"}
     assert stats["milliseconds"]["triangulate"] == 0.0 and stats["milliseconds"]["factorize"] == 0.0
 
