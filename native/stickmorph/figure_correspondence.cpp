@@ -128,6 +128,10 @@ struct Skeleton {
   std::vector<int> chain_of_vertex;   ///< per vertex of degree 2: its chain (or 0 for a loop)
   std::vector<int> slot_of_vertex;    ///< per vertex of degree 2: its index in the chain's vertices
   int loops = 0;                      ///< independent cycles, E - V + 1
+  /// The rotation (radians) that fits are charged from: 0 for a figure on
+  /// its own; for a part of a figure of several, the whole figure's, so that
+  /// a symmetric part turns with the rest.
+  double reference_rotation = 0;
 
   bool is_loop() const { return nodes.empty() && !figure->edges.empty(); }
   int dart_count() const { return int(chain_of_dart.size()); }
@@ -272,7 +276,10 @@ void compare_invariants(const Skeleton& source, const Skeleton& target) {
 struct Fit {
   double residual = 1;
   double rotation = 0;  ///< radians, counter-clockwise, in (-pi, pi]
-  double cost() const { return residual * (1 + kRotationCharge * (1 - std::cos(rotation))); }
+  double reference = 0;  ///< the rotation charged from (Skeleton::reference_rotation)
+  double cost() const { return residual * (1 + kRotationCharge * (1 - std::cos(rotation - reference))); }
+  /// How far the rotation is from the reference, in [0, pi].
+  double turn() const { return std::abs(std::remainder(rotation - reference, 2 * kPi)); }
 };
 
 struct SampleSet {
@@ -382,7 +389,9 @@ Fit candidate_fit(const Skeleton& source, const Skeleton& target, const std::vec
       set.add(point_at(*source.figure, s, u), point_at(*target.figure, t, w), weight);
     }
   }
-  return set.fit();
+  Fit fit = set.fit();
+  fit.reference = source.reference_rotation;
+  return fit;
 }
 
 // --------------------------------------------------------------- pins ------
@@ -575,7 +584,8 @@ Search search_isomorphisms(const Skeleton& source, const Skeleton& target,
   return search;
 }
 
-/// The least-cost fit; near ties go to the smallest rotation.
+/// The least-cost fit; near ties go to the smallest rotation (from the
+/// reference).
 std::size_t best_fit(const std::vector<Fit>& fits) {
   double least = std::numeric_limits<double>::infinity();
   for (const Fit& fit : fits) least = std::min(least, fit.cost());
@@ -583,7 +593,7 @@ std::size_t best_fit(const std::vector<Fit>& fits) {
   std::size_t best = fits.size();
   for (std::size_t k = 0; k < fits.size(); ++k) {
     if (fits[k].cost() > tie) continue;
-    if (best == fits.size() || std::abs(fits[k].rotation) < std::abs(fits[best].rotation)) best = k;
+    if (best == fits.size() || fits[k].turn() < fits[best].turn()) best = k;
   }
   return best;
 }
@@ -966,11 +976,13 @@ VertexPin parse_vertex_pin(const std::string& text) {
 
 namespace {
 
-// One connected figure matched to another (steps 1 to 4 of the header).
+// One connected figure matched to another (steps 1 to 4 of the header);
+// `reference_rotation`: Skeleton::reference_rotation.
 FigureCorrespondence correspond_connected(const StickFigure& source, const StickFigure& target,
-                                          const CorrespondenceOptions& options) {
+                                          const CorrespondenceOptions& options, double reference_rotation = 0) {
   const auto start = std::chrono::steady_clock::now();
-  const Skeleton s = make_skeleton(source);
+  Skeleton s = make_skeleton(source);
+  s.reference_rotation = reference_rotation;
   const Skeleton t = make_skeleton(target);
   std::vector<std::pair<int, int>> node_pins;
   std::vector<PinPlace> chain_pins;
@@ -1322,46 +1334,31 @@ FigureCorrespondence correspond_parts(const StickFigure& source, const StickFigu
 
   const std::vector<PartPlace> source_places = part_places(source, source_parts);
   const std::vector<PartPlace> target_places = part_places(target, target_parts);
-  // A pairing that cannot match costs more than any that can (kBarred), so
-  // that the assignment uses one only where nothing else is left.
-  constexpr double kBarred = 1e12;
-  std::vector<std::vector<double>> cost(std::size_t(k), std::vector<double>(std::size_t(k), 0.0));
-  for (int a = 0; a < k; ++a)
-    for (int b = 0; b < k; ++b) {
-      const bool possible =
-          source_shapes[std::size_t(a)] == target_shapes[std::size_t(b)] &&
-          source_nesting.enclosing[std::size_t(a)].size() == target_nesting.enclosing[std::size_t(b)].size() &&
-          (forced[std::size_t(a)] < 0 || forced[std::size_t(a)] == b) &&
-          (forced_by[std::size_t(b)] < 0 || forced_by[std::size_t(b)] == a);
-      const PartPlace& x = source_places[std::size_t(a)];
-      const PartPlace& y = target_places[std::size_t(b)];
-      const double dx = x.center[0] - y.center[0], dy = x.center[1] - y.center[1], ds = x.size - y.size;
-      cost[std::size_t(a)][std::size_t(b)] = (possible ? 0.0 : kBarred) + dx * dx + dy * dy + 0.25 * ds * ds;
-    }
-  const std::vector<int> partner = least_cost_assignment(cost);
-  for (int a = 0; a < k; ++a)
-    if (cost[std::size_t(a)][std::size_t(partner[std::size_t(a)])] >= kBarred) {
-      const PartShape& shape = source_shapes[std::size_t(a)];
-      std::string why = "no part of the target is left for " + describe_part(source_parts, a) + " of the source (" +
-                        describe_shape(shape, source_parts.vertices[std::size_t(a)].size()) + ", inside " +
-                        plural((long long)source_nesting.enclosing[std::size_t(a)].size(), "other part", "other parts") +
-                        ") that has its shape and nesting depth";
-      if (forced[std::size_t(a)] >= 0) {
-        why += "; " + forcing_pin[std::size_t(a)] + " pairs it with " + describe_part(target_parts, forced[std::size_t(a)]) +
-               " of the target";
-        throw IncompatibleFiguresError(Incompatibility::PinsUnsatisfiable, "correspond: " + why,
-                                       {source_parts.vertices[std::size_t(a)].front()});
-      }
-      topology_differs(why);
-    }
+  auto allowed = [&](int a, int b) {
+    return source_shapes[std::size_t(a)] == target_shapes[std::size_t(b)] &&
+           source_nesting.enclosing[std::size_t(a)].size() == target_nesting.enclosing[std::size_t(b)].size() &&
+           (forced[std::size_t(a)] < 0 || forced[std::size_t(a)] == b) &&
+           (forced_by[std::size_t(b)] < 0 || forced_by[std::size_t(b)] == a);
+  };
 
-  // Each pair matched on its own.
-  FigureCorrespondence result;
+  // The reference pair: the source's largest part and the target part of
+  // its shape and depth nearest in size. Its match gives the whole figure's
+  // rotation and scale, which place the other parts (a target turned a
+  // quarter turn has its parts a quarter turn round) and which symmetric
+  // parts are charged from (Skeleton::reference_rotation).
+  int reference = 0;
+  for (int a = 1; a < k; ++a)
+    if (source_places[std::size_t(a)].size > source_places[std::size_t(reference)].size) reference = a;
+  int reference_partner = -1;
+  for (int b = 0; b < k; ++b)
+    if (allowed(reference, b) &&
+        (reference_partner < 0 || std::abs(target_places[std::size_t(b)].size - source_places[std::size_t(reference)].size) <
+                                      std::abs(target_places[std::size_t(reference_partner)].size -
+                                               source_places[std::size_t(reference)].size)))
+      reference_partner = b;
   std::vector<FigureCorrespondence> matched(static_cast<std::size_t>(k));
-  std::size_t largest = 0;
-  double weight = 0;
-  for (int a = 0; a < k; ++a) {
-    const int b = partner[std::size_t(a)];
+  std::vector<bool> done(std::size_t(k), false);
+  auto match_pair = [&](int a, int b, double reference_rotation) {
     const PartFigure& sp = source_pieces[std::size_t(a)];
     const PartFigure& tp = target_pieces[std::size_t(b)];
     CorrespondenceOptions local;
@@ -1375,14 +1372,98 @@ FigureCorrespondence correspond_parts(const StickFigure& source, const StickFigu
     const std::string which = "correspond: " + describe_part(source_parts, a) + " of the source and " +
                               describe_part(target_parts, b) + " of the target (numbered within each part): ";
     try {
-      matched[std::size_t(a)] = correspond_connected(sp.figure, tp.figure, local);
+      matched[std::size_t(a)] = correspond_connected(sp.figure, tp.figure, local, reference_rotation);
     } catch (const IncompatibleFiguresError& error) {
       throw IncompatibleFiguresError(error.kind(), which + without_prefix(error.what(), "correspond: "),
                                      {sp.global_vertex.front()});
     } catch (const InvalidArgumentError& error) {
       throw InvalidArgumentError(which + without_prefix(error.what(), "correspond: "));
     }
+    done[std::size_t(a)] = true;
+  };
+  double rotation = 0, scale = 1;
+  if (reference_partner >= 0) {
+    match_pair(reference, reference_partner, 0.0);
+    rotation = matched[std::size_t(reference)].rotation_degrees * kPi / 180.0;
+    if (source_places[std::size_t(reference)].size > 0 && target_places[std::size_t(reference_partner)].size > 0)
+      scale = target_places[std::size_t(reference_partner)].size / source_places[std::size_t(reference)].size;
+  }
+  // Where part a would be in the target if the whole figure moved like the
+  // reference pair.
+  auto predicted = [&](int a) {
+    if (reference_partner < 0) return source_places[std::size_t(a)].center;
+    const Vec2& o = source_places[std::size_t(reference)].center;
+    const Vec2& p = source_places[std::size_t(a)].center;
+    const double dx = p[0] - o[0], dy = p[1] - o[1];
+    const double c = std::cos(rotation), s = std::sin(rotation);
+    const Vec2& q = target_places[std::size_t(reference_partner)].center;
+    return Vec2{q[0] + scale * (c * dx - s * dy), q[1] + scale * (s * dx + c * dy)};
+  };
+
+  // The parts paired level by level from the outside in, so that a part's
+  // partner lies in its parent's partner (the matched figures then nest
+  // alike wherever the parents' faces correspond). A pairing that cannot
+  // match costs more than any that can (kBarred), so that the assignment
+  // uses one only where nothing else is left.
+  constexpr double kBarred = 1e12;
+  std::vector<int> partner(std::size_t(k), -1);
+  std::size_t deepest = 0;
+  for (int a = 0; a < k; ++a) deepest = std::max(deepest, source_nesting.enclosing[std::size_t(a)].size());
+  for (std::size_t depth = 0; depth <= deepest; ++depth) {
+    std::vector<int> rows, columns;
+    for (int a = 0; a < k; ++a)
+      if (source_nesting.enclosing[std::size_t(a)].size() == depth) rows.push_back(a);
+    for (int b = 0; b < k; ++b)
+      if (target_nesting.enclosing[std::size_t(b)].size() == depth) columns.push_back(b);
+    if (rows.empty()) continue;
+    if (rows.size() != columns.size()) {
+      topology_differs("the source has " + plural((long long)rows.size(), "part", "parts") + " inside " +
+                       plural((long long)depth, "other part", "other parts") + " and the target " +
+                       std::to_string(columns.size()));
+    }
+    std::vector<std::vector<double>> cost(rows.size(), std::vector<double>(columns.size(), 0.0));
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      for (std::size_t j = 0; j < columns.size(); ++j) {
+        const int a = rows[i], b = columns[j];
+        const int parent = source_nesting.parent_part[std::size_t(a)];
+        bool possible = allowed(a, b) &&
+                        (parent < 0 || partner[std::size_t(parent)] == target_nesting.parent_part[std::size_t(b)]) &&
+                        (a != reference || reference_partner < 0 || b == reference_partner);
+        const Vec2 x = predicted(a);
+        const PartPlace& y = target_places[std::size_t(b)];
+        const double dx = x[0] - y.center[0], dy = x[1] - y.center[1];
+        const double ds = scale * source_places[std::size_t(a)].size - y.size;
+        cost[i][j] = (possible ? 0.0 : kBarred) + dx * dx + dy * dy + 0.25 * ds * ds;
+      }
+    const std::vector<int> chosen = least_cost_assignment(cost);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const int a = rows[i], b = columns[std::size_t(chosen[i])];
+      if (cost[i][std::size_t(chosen[i])] >= kBarred) {
+        const PartShape& shape = source_shapes[std::size_t(a)];
+        std::string why = "no part of the target is left for " + describe_part(source_parts, a) + " of the source (" +
+                          describe_shape(shape, source_parts.vertices[std::size_t(a)].size()) + ", inside " +
+                          plural((long long)depth, "other part", "other parts") +
+                          ") that has its shape and lies in the part matched to its parent";
+        if (forced[std::size_t(a)] >= 0) {
+          why += "; " + forcing_pin[std::size_t(a)] + " pairs it with " +
+                 describe_part(target_parts, forced[std::size_t(a)]) + " of the target";
+          throw IncompatibleFiguresError(Incompatibility::PinsUnsatisfiable, "correspond: " + why,
+                                         {source_parts.vertices[std::size_t(a)].front()});
+        }
+        topology_differs(why);
+      }
+      partner[std::size_t(a)] = b;
+    }
+  }
+
+  // Each pair matched on its own, charged from the whole figure's rotation.
+  FigureCorrespondence result;
+  std::size_t largest = 0;
+  double weight = 0;
+  for (int a = 0; a < k; ++a) {
+    if (!done[std::size_t(a)]) match_pair(a, partner[std::size_t(a)], rotation);
     const FigureCorrespondence& m = matched[std::size_t(a)];
+    const PartFigure& sp = source_pieces[std::size_t(a)];
     result.skeleton_nodes += m.skeleton_nodes;
     result.skeleton_chains += m.skeleton_chains;
     result.candidates += m.candidates;
@@ -1395,7 +1476,6 @@ FigureCorrespondence correspond_parts(const StickFigure& source, const StickFigu
       result.rotation_degrees = m.rotation_degrees;
     }
   }
-
   if (weight > 0) result.residual /= weight;
 
   // Put together: the source's vertices keep their numbers; the dummies of

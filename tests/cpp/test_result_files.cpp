@@ -69,7 +69,7 @@ TEST_CASE("the morph file of the barycentric morph", "[result_files]") {
   CHECK(frames[2].as_array()[1].as_array()[1].as_number() == 1.0);
   CHECK(file.find("triangulation")->is_object());
   const JsonValue& stats = *file.find("stats");
-  CHECK(keys(stats) == std::vector<std::string>{"steiner_vertices", "triangles", "milliseconds", "method",
+  CHECK(keys(stats) == std::vector<std::string>{"steiner_vertices", "triangles", "parts", "bridge_vertices", "milliseconds", "method",
                                                 "steiner_method", "enclosure_sides", "weights", "verified",
                                                 "refined_frames", "factorizations"});
   CHECK(keys(*stats.find("milliseconds")) ==
@@ -93,7 +93,8 @@ TEST_CASE("the morph file of the straight-line baseline has no triangulation", "
   CHECK(file.find("times")->as_array().size() == 4);
   const JsonValue& stats = *file.find("stats");
   CHECK(keys(stats) ==
-        std::vector<std::string>{"steiner_vertices", "triangles", "milliseconds", "method", "invalid_frames"});
+        std::vector<std::string>{"steiner_vertices", "triangles", "parts", "bridge_vertices", "milliseconds", "method",
+                                 "invalid_frames"});
   CHECK(stats.find("steiner_vertices")->as_number() == 0);
   CHECK(keys(*stats.find("milliseconds")) == std::vector<std::string>{"triangulate", "morph"});
   CHECK(stats.find("invalid_frames")->as_array().empty());

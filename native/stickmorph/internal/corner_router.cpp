@@ -62,9 +62,11 @@ class CornerRouterImpl {
   }
 };
 
-CornerRouter::CornerRouter(const std::vector<Vec2>& nodes, const std::vector<Edge>& constraints)
+CornerRouter::CornerRouter(const std::vector<Vec2>& nodes, const std::vector<Edge>& constraints,
+                           const std::vector<Vec2>& frame)
     : impl_(std::make_unique<CornerRouterImpl>()) {
   for (const Vec2& p : nodes) impl_->add_node(p);
+  for (const Vec2& p : frame) impl_->cdt.insert(Kernel::Point_2(p[0], p[1]))->info() = -1;
   for (const Edge& e : constraints) add_constraint(e[0], e[1]);
 }
 CornerRouter::~CornerRouter() = default;

@@ -36,7 +36,12 @@ class CornerRouter {
   /// `nodes` (#N by 2) are the triangulation's vertices, `constraints`
   /// node pairs that no route may cross. Nodes must be distinct and the
   /// constraints must not cross (a valid figure and its enclosure).
-  CornerRouter(const std::vector<Vec2>& nodes, const std::vector<Edge>& constraints);
+  /// `frame`: more points, unconstrained and not addressable, that widen
+  /// the triangulation beyond the nodes' convex hull, so that a route can
+  /// leave a corner that faces outwards on the hull (a box around a figure
+  /// whose exterior is routed through).
+  CornerRouter(const std::vector<Vec2>& nodes, const std::vector<Edge>& constraints,
+               const std::vector<Vec2>& frame = {});
   ~CornerRouter();
   CornerRouter(CornerRouter&&) noexcept;
   CornerRouter& operator=(CornerRouter&&) noexcept;

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <set>
 #include <utility>
 
 #include "stickmorph/compatibility.h"
@@ -29,15 +28,33 @@ RouteCorner corner_of(const StickFigure& f, const Decomposition& d, int s, int k
   return c;
 }
 
+// A box around the points with a margin of half their extent: routes
+// between parts at the top level may have to pass outside the figure's
+// convex hull (the exterior corner of a hull vertex opens only outwards).
+std::vector<Vec2> frame_around(const std::vector<Vec2>& points) {
+  Vec2 lo = points.front(), hi = points.front();
+  for (const Vec2& p : points)
+    for (int c = 0; c < 2; ++c)
+      lo[std::size_t(c)] = std::min(lo[std::size_t(c)], p[std::size_t(c)]),
+      hi[std::size_t(c)] = std::max(hi[std::size_t(c)], p[std::size_t(c)]);
+  double margin = 0.5 * std::max(hi[0] - lo[0], hi[1] - lo[1]);
+  if (!(margin > 0)) margin = std::max(1.0, 1e-6 * std::max(std::abs(lo[0]), std::abs(lo[1])));
+  return {{lo[0] - margin, lo[1] - margin}, {hi[0] + margin, lo[1] - margin}, {hi[0] + margin, hi[1] + margin},
+          {lo[0] - margin, hi[1] + margin}};
+}
+
 // One figure with the bridges made so far: nodes (the figure's vertices,
 // then the bends) and the segments that a new bridge must not meet.
 struct Side {
   std::vector<Vec2> nodes;
   std::vector<Edge> segments;
   std::vector<int> degree;  // per node
+  std::vector<std::vector<int>> bridged_to;  // per figure vertex: the nodes its bridges leave to
   CornerRouter router;
 
-  Side(const StickFigure& f) : nodes(f.vertices), segments(f.edges), degree(f.vertices.size(), 0), router(f.vertices, f.edges) {
+  Side(const StickFigure& f)
+      : nodes(f.vertices), segments(f.edges), degree(f.vertices.size(), 0), bridged_to(f.vertices.size()),
+        router(f.vertices, f.edges, frame_around(f.vertices)) {
     for (const Edge& e : f.edges) ++degree[std::size_t(e[0])], ++degree[std::size_t(e[1])];
   }
 
@@ -111,6 +128,44 @@ struct Side {
     return true;
   }
 
+  // A corner of the figure as it is now: the bridges that leave its vertex
+  // inside its wedge split it into several, in counter-clockwise order from
+  // `next`. Compatible figures have the same order (the bridges left the
+  // same corners in both), so the source's order serves both.
+  std::vector<RouteCorner> split(const RouteCorner& c) const {
+    const std::vector<int>& out = bridged_to[std::size_t(c.vertex)];
+    const Vec2& v = nodes[std::size_t(c.vertex)];
+    std::vector<int> inside;
+    for (int b : out)
+      if (c.next < 0 || admits(c, nodes[std::size_t(b)])) inside.push_back(b);
+    if (inside.empty()) return {c};
+    // Counter-clockwise from a reference direction: first the half-turn
+    // left of it, then the rest (exact orientation tests).
+    const int reference = c.next >= 0 ? c.next : inside.front();
+    const Vec2& r = nodes[std::size_t(reference)];
+    auto half = [&](int b) { return orientation(v, r, nodes[std::size_t(b)]) > 0 ? 0 : 1; };
+    std::sort(inside.begin(), inside.end(), [&](int a, int b) {
+      if (a == reference || b == reference) return a == reference && b != reference;
+      const int ha = half(a), hb = half(b);
+      if (ha != hb) return ha < hb;
+      return orientation(v, nodes[std::size_t(a)], nodes[std::size_t(b)]) > 0;
+    });
+    std::vector<RouteCorner> pieces;
+    if (c.next < 0) {
+      // A lone vertex with bridges: the wedges between them.
+      for (std::size_t i = 0; i < inside.size(); ++i)
+        pieces.push_back({c.vertex, inside[i], inside[(i + inside.size() - 1) % inside.size()]});
+      return pieces;
+    }
+    int from = c.next;
+    for (int b : inside) {
+      pieces.push_back({c.vertex, from, b});
+      from = b;
+    }
+    pieces.push_back({c.vertex, from, c.prev});
+    return pieces;
+  }
+
   void add(int from, int to, const std::vector<Vec2>& bends) {
     int previous = from;
     for (const Vec2& b : bends) {
@@ -125,6 +180,8 @@ struct Side {
   }
 
   void link(int a, int b) {
+    if (std::size_t(a) < bridged_to.size()) bridged_to[std::size_t(a)].push_back(b);
+    if (std::size_t(b) < bridged_to.size()) bridged_to[std::size_t(b)].push_back(a);
     segments.push_back({a, b});
     ++degree[std::size_t(a)], ++degree[std::size_t(b)];
     router.add_constraint(a, b);
@@ -153,8 +210,6 @@ BridgedFigures bridge_parts(const StickFigure& source, const Decomposition& dec,
     return nesting.enclosing[std::size_t(a)].size() < nesting.enclosing[std::size_t(b)].size();
   });
   std::vector<bool> bridged(std::size_t(count), false);
-  std::set<std::pair<int, int>> used;  // corners (vertex, next) that hold a bridge
-  auto key = [](const RouteCorner& c) { return std::make_pair(c.vertex, c.next); };
 
   for (int part : order) {
     const int parent = nesting.parent_part[std::size_t(part)];
@@ -175,17 +230,14 @@ BridgedFigures bridge_parts(const StickFigure& source, const Decomposition& dec,
 
     std::vector<RouteCorner> starts, goals;
     const int own = dec.exterior_of_part[std::size_t(part)];
-    for (std::size_t k = 0; k < dec.sequences[std::size_t(own)].vertices.size(); ++k) {
-      const RouteCorner c = corner_of(source, dec, own, int(k));
-      if (!used.count(key(c))) starts.push_back(c);
-    }
+    // No bridge has reached this part yet (its parent's face and its
+    // siblings are bridged before it, its children after).
+    for (std::size_t k = 0; k < dec.sequences[std::size_t(own)].vertices.size(); ++k)
+      starts.push_back(corner_of(source, dec, own, int(k)));
+    // The corners of the face as the bridges so far have made it.
     for (int s : goal_sequences)
-      for (std::size_t k = 0; k < dec.sequences[std::size_t(s)].vertices.size(); ++k) {
-        const RouteCorner c = corner_of(source, dec, s, int(k));
-        if (!used.count(key(c))) goals.push_back(c);
-      }
-    if (starts.empty() || goals.empty())
-      throw InternalError("part bridges: every corner of " + describe_part(parts, part) + " or of its face holds a bridge");
+      for (std::size_t k = 0; k < dec.sequences[std::size_t(s)].vertices.size(); ++k)
+        for (const RouteCorner& c : sides[0].split(corner_of(source, dec, s, int(k)))) goals.push_back(c);
 
     // The nearest corner pairs (in both figures together), sampled evenly
     // where there are very many.
@@ -209,8 +261,6 @@ BridgedFigures bridge_parts(const StickFigure& source, const Decomposition& dec,
       const RouteCorner& to = goals[pairs[t].second.second];
       if (sides[0].straight(from, to) && sides[1].straight(from, to)) {
         for (Side& side : sides) side.add(from.vertex, to.vertex, {});
-        used.insert(key(from));
-        used.insert(key(to));
         done = true;
       }
     }
@@ -241,8 +291,6 @@ BridgedFigures bridge_parts(const StickFigure& source, const Decomposition& dec,
                   int(best_bends));
         sides[s].add(best_from.vertex, best_to.vertex, best[s]);
       }
-      used.insert(key(best_from));
-      used.insert(key(best_to));
       result.bends += int(best_bends);
     }
     ++result.bridges;
