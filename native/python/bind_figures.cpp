@@ -302,8 +302,9 @@ Raises:
     joins vertices of different kinds; an array of the wrong shape.
   IncompatibleFiguresError: the figures cannot be matched; kind
     "topology_differs" (loops, ends, junction degrees or their arrangement
-    differ; the message says which), "mirror_image", "exterior_differs" or
-    "pins_unsatisfiable".)doc");
+    differ, or the number of parts; the message says which), "mirror_image",
+    "exterior_differs", "nesting_differs" (the matched parts nest otherwise)
+    or "pins_unsatisfiable".)doc");
 }
 
 }  // namespace stickmorph::python

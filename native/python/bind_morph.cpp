@@ -644,8 +644,9 @@ Raises:
   IncompatibleFiguresError: the figures are not compatible; its kind and
     vertices attributes are those of check_compatibility's report. With
     correspond="auto": the figures cannot be matched, kind
-    "topology_differs", "mirror_image", "exterior_differs" or
-    "pins_unsatisfiable".
+    "topology_differs", "mirror_image", "exterior_differs",
+    "nesting_differs" or "pins_unsatisfiable". Figures of several parts
+    whose parts nest differently: kind "nesting_differs".
   InvalidArgumentError: frames out of range or not an integer, an unknown
     method, weights or steiner name, enclosure_sides out of range, an option
     method="linear" would ignore, or an array of the wrong shape or type.
