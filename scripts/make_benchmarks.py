@@ -377,7 +377,10 @@ def write_report(records, polygon_pairs, run, out_path, plot_dir, motion=None, c
         "- **tree**: a spine with alternating two-edge branches; target twisted.\n"
         "- **triangulation**: a k×k grid with one diagonal per cell; target twisted.\n"
         "- **thinned**: the Delaunay triangulation of a jittered triangular lattice, thinned to a random "
-        "spanning tree plus a third of the other edges (faces of many sizes, dangling trees); target twisted.\n")
+        "spanning tree plus a third of the other edges (faces of many sizes, dangling trees); target twisted.\n"
+        "- **rings**: figures of several parts (issue 14): a grid of cells, each a ring of 16 vertices round a "
+        "ring of 8 round a dot (a lone vertex); in the target every inner ring is turned by 120° inside its "
+        "ring and the whole is twisted, so the bridges that join the parts into one triangulation must bend.\n")
     rows = []
     for family in families:
         for c in improved_cells(cells, family, sizes):

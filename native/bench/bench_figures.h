@@ -11,7 +11,12 @@
 //  - triangulation: a k by k grid cut by one diagonal per cell, target twisted;
 //  - thinned:       a Delaunay triangulation of a seeded jittered lattice, thinned
 //                   to a random spanning tree plus a third of the other edges
-//                   (faces of every size, dangling trees), target twisted.
+//                   (faces of every size, dangling trees), target twisted;
+//  - rings:         figures of several parts (issue 14): a grid of cells, each
+//                   a ring round a smaller ring round a dot; in the target
+//                   every inner ring turned by 120 degrees in its ring, then
+//                   the whole twisted (the bridges between the parts must
+//                   bend).
 //
 // Compatible by construction: polylines and simple polygons with the same
 // vertex order are always compatible; the other targets are the source under
@@ -57,7 +62,8 @@ struct RawPair {
 };
 
 inline const std::vector<std::string>& family_names() {
-  static const std::vector<std::string> names = {"polyline", "spiral", "polygon", "tree", "triangulation", "thinned"};
+  static const std::vector<std::string> names = {"polyline", "spiral",        "polygon",
+                                                  "tree",     "triangulation", "thinned", "rings"};
   return names;
 }
 
@@ -239,6 +245,42 @@ inline RawPair thinned_pair(int n) {
   return twisted_pair(std::move(points), std::move(edges), 3.0);
 }
 
+/// Rings in rings round dots, 25 vertices a cell: an outer ring of 16, an
+/// inner ring of 8, turned by 120 degrees in the target, and a dot off the
+/// centre; the target twisted, the twist halved until the pair is
+/// compatible (nesting included).
+inline RawPair rings_pair(int n) {
+  const int side = std::max(1, int(std::lround(std::sqrt(n / 25.0))));
+  RawPair pair;
+  std::vector<Vec2> turned;
+  auto ring = [&](double cx, double cy, double r, int count, double phase, double turn) {
+    const std::int64_t first = std::int64_t(pair.source.size());
+    for (int i = 0; i < count; ++i) {
+      const double a = phase + 2 * kPi * i / count;
+      pair.source.push_back({cx + r * std::cos(a), cy + r * std::sin(a)});
+      turned.push_back({cx + r * std::cos(a + turn), cy + r * std::sin(a + turn)});
+      pair.edges.push_back({first + i, first + (i + 1) % count});
+    }
+  };
+  for (int row = 0; row < side; ++row)
+    for (int column = 0; column < side; ++column) {
+      const double cx = 10.0 * column, cy = 10.0 * row;
+      ring(cx, cy, 4.0, 16, 0.0, 0.0);
+      ring(cx, cy, 2.0, 8, 0.2, 2 * kPi / 3);
+      pair.source.push_back({cx + 0.3, cy + 0.1});
+      turned.push_back({cx + 0.3, cy + 0.1});
+    }
+  double strength = 3.0;
+  for (int attempt = 0; attempt < 12; ++attempt, strength *= 0.5) {
+    pair.target = twisted(turned, strength);
+    if (is_compatible_pair(pair.source, pair.target, pair.edges)) {
+      pair.twist = strength;
+      return pair;
+    }
+  }
+  throw std::runtime_error("bench_figures: no twist keeps the rings compatible");
+}
+
 /// The pair of `family` at about n vertices.
 /// @throws std::invalid_argument for an unknown family.
 inline RawPair make_pair(const std::string& family, int n) {
@@ -248,6 +290,7 @@ inline RawPair make_pair(const std::string& family, int n) {
   if (family == "tree") return tree_pair(n);
   if (family == "triangulation") return triangulation_pair(n);
   if (family == "thinned") return thinned_pair(n);
+  if (family == "rings") return rings_pair(n);
   throw std::invalid_argument("unknown family '" + family + "'");
 }
 

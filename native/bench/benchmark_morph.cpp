@@ -66,7 +66,7 @@ constexpr const char* kUsage =
     "each case in a child process of its own.\n"
     "\n"
     "  --sizes LIST             requested vertex counts (default 10,30,100,300,1000,3000,10000)\n"
-    "  --families LIST          polyline,spiral,polygon,tree,triangulation,thinned (default all)\n"
+    "  --families LIST          polyline,spiral,polygon,tree,triangulation,thinned,rings (default all)\n"
     "  --frames N               frames per morph (default 50)\n"
     "  --json FILE              write one JSON object per (case, method) to FILE\n"
     "  --aronov-max N           run aronov only up to N requested vertices (default 300)\n"
