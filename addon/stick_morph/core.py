@@ -287,6 +287,42 @@ def compare_edge_sets(source_edges, target_edges, source_name: str = "source",
            "vertices as vertex i of the other): " + "; ".join(parts)
 
 
+# ----------------------------------------------------------------- parts ----
+
+def figure_parts(vertex_count: int, edges) -> list[list[int]]:
+    """The parts (connected components) of a figure on vertex_count vertices,
+    each as its sorted vertex indices, in order of their smallest vertex: the
+    engine's numbering, "part 0", "part 1", ... A vertex on no edge (a dot)
+    is a part of its own. Edges to vertices outside 0..vertex_count-1 are
+    ignored (the engine refuses them, naming the edge)."""
+    parent = list(range(int(vertex_count)))
+
+    def root(v):
+        while parent[v] != v:
+            parent[v] = parent[parent[v]]
+            v = parent[v]
+        return v
+
+    for a, b in np.asarray(edges, dtype=np.int64).reshape(-1, 2).tolist():
+        if 0 <= a < vertex_count and 0 <= b < vertex_count:
+            ra, rb = root(a), root(b)
+            if ra != rb:
+                parent[max(ra, rb)] = min(ra, rb)  # the root is the part's smallest vertex
+    parts = {}
+    for v in range(int(vertex_count)):
+        parts.setdefault(root(v), []).append(v)
+    return [parts[r] for r in sorted(parts)]
+
+
+def parts_summary(parts) -> str:
+    """'' for one part; else '3 parts (1 dot)' or '2 parts', for the report."""
+    count = len(parts)
+    if count <= 1:
+        return ""
+    dots = sum(1 for part in parts if len(part) == 1)
+    return f"{count} parts" + (f" ({dots} dot{'s' if dots != 1 else ''})" if dots else "")
+
+
 # ---------------------------------------------------------------- easing ----
 
 def ease(t, easing: str = "LINEAR"):
@@ -633,6 +669,15 @@ def match_error_message(error: Exception, source_name: str, target_name: str, pi
     # name, which means nothing in Blender.
     reason = _without_prefix(getattr(error, "reason", None) or str(error), "correspond: ")
     kind = getattr(error, "kind", None)
+    if index_report is not None and not index_report and getattr(index_report, "kind", None) == NESTING_DIFFERS:
+        # Automatic checked by index first (the meshes have the same edges,
+        # so the same parts) and found a part in another face: that is what
+        # the user changed, in the meshes' own vertex numbers; the matching
+        # (whose numbers are the matched figure's) cannot undo it.
+        text = nesting_message(index_report.reason, source_name, target_name)
+        if kind == NESTING_DIFFERS:
+            return text + " (matched by shape, the parts nest differently too)"
+        return text + f" (nor can they be matched by shape: {reason})"
     if kind == "pins_unsatisfiable":
         listing = "; ".join(f"'{pin.name}': vertex {pin.source} of '{source_name}' to vertex {pin.target} "
                             f"of '{target_name}'" for pin in pins)
@@ -640,11 +685,26 @@ def match_error_message(error: Exception, source_name: str, target_name: str, pi
     elif kind == "mirror_image":
         text = f"cannot match '{source_name}' and '{target_name}': '{target_name}' is a mirror image of " \
                f"'{source_name}': {reason}"
+    elif kind == NESTING_DIFFERS:
+        text = nesting_message(reason, source_name, target_name)
     else:
         text = f"cannot match '{source_name}' and '{target_name}': {reason}"
     if index_report is not None and not index_report:
         text += f" (nor are they compatible by index: {_without_prefix(index_report.reason, 'incompatible figures: ')})"
     return text
+
+
+# The kind of IncompatibleFiguresError (and CompatibilityReport) for a pair
+# of figures with several parts where a part lies in another face of another
+# part in the target than in the source (issue 14).
+NESTING_DIFFERS = "nesting_differs"
+
+
+def nesting_message(reason: str, source_name: str, target_name: str) -> str:
+    """The message for kind nesting_differs: the engine's reason names the
+    part ("part 1", parts numbered by their smallest vertex, figure_parts)."""
+    reason = _without_prefix(_without_prefix(reason, "correspond: "), "incompatible figures: ")
+    return f"'{source_name}' and '{target_name}': a part changes face: {reason}"
 
 
 def _where(vertices) -> str:
@@ -669,14 +729,14 @@ def engine_error_message(error: Exception, source_name: str, target_name: str) -
             return f"crossing edges: {text} (mesh edge indices)"
         if defect in ("overlapping_edges", "vertex_on_edge", "coincident_vertices"):
             return f"the figure touches itself: {text}"
-        if defect == "disconnected":
-            return f"the figure is not connected: {text}"
         return f"invalid figure: {text}"
     if isinstance(error, engine.IncompatibleFiguresError):
         # The morph's own compatibility check of the pair it is given (a
         # matched pair passes it): its exception carries the report (kind,
         # vertices, reason). A matching's refusal is match_error_message's.
         where = _where(error.vertices or [])
+        if error.kind == NESTING_DIFFERS:
+            return nesting_message(error.reason or text, source_name, target_name)
         if error.kind == "mirror_image":
             return (f"incompatible figures: '{target_name}' is a mirror image of '{source_name}'"
                     f"{where}: {error.reason}")

@@ -268,8 +268,10 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
             scene_settings.last_milliseconds = milliseconds
             scene_settings.last_motion = motion_short
             scene_settings.last_correspondence = match_short
+        # Several parts (loose parts, dots) are said; one part is not.
+        parts = core.parts_summary(core.figure_parts(len(prepared.source_xy), prepared.edges))
         text = (f"Stick Morph: '{result.name}': {len(prepared.source_xy)} vertices, "
-                f"{steiner} Steiner vertices, {count} frames, {milliseconds:.0f} ms; {match_text}; {motion_text}")
+                f"{parts + ', ' if parts else ''}{steiner} Steiner vertices, {count} frames, {milliseconds:.0f} ms; {match_text}; {motion_text}")
         if morph.invalid_frames:
             # LINEAR is the baseline, not guaranteed valid: the bake keeps
             # its frames and says which of them are not stick figures
