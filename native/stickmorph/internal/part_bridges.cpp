@@ -239,14 +239,41 @@ BridgedFigures bridge_parts(const StickFigure& source, const Decomposition& dec,
       for (std::size_t k = 0; k < dec.sequences[std::size_t(s)].vertices.size(); ++k)
         for (const RouteCorner& c : sides[0].split(corner_of(source, dec, s, int(k)))) goals.push_back(c);
 
-    // The nearest corner pairs (in both figures together), sampled evenly
-    // where there are very many.
-    constexpr std::size_t kMaxPairs = 250000;
-    const std::size_t stride =
-        std::max<std::size_t>(1, std::size_t(std::ceil(std::sqrt(double(starts.size()) * double(goals.size()) / kMaxPairs))));
+    // The nearest corner pairs (in both figures together). First the goal
+    // corners nearest to the part, then the part's corners nearest to those,
+    // so that a part among thousands costs linear work, not a product.
+    constexpr std::size_t kNearest = 64;
+    auto centre_of = [&](const Side& side, const std::vector<RouteCorner>& corners) {
+      Vec2 c{0, 0};
+      for (const RouteCorner& corner : corners)
+        c[0] += side.nodes[std::size_t(corner.vertex)][0] / double(corners.size()),
+        c[1] += side.nodes[std::size_t(corner.vertex)][1] / double(corners.size());
+      return c;
+    };
+    auto nearest = [&](std::vector<RouteCorner>& corners, const std::vector<RouteCorner>& to) {
+      if (corners.size() <= kNearest) return;
+      const Vec2 centres[2] = {centre_of(sides[0], to), centre_of(sides[1], to)};
+      std::vector<std::pair<double, std::size_t>> reach;  // squared distances, summed over both
+      reach.reserve(corners.size());
+      for (std::size_t i = 0; i < corners.size(); ++i) {
+        double sum = 0;
+        for (int f = 0; f < 2; ++f) {
+          const Vec2& q = sides[f].nodes[std::size_t(corners[i].vertex)];
+          sum += (q[0] - centres[f][0]) * (q[0] - centres[f][0]) + (q[1] - centres[f][1]) * (q[1] - centres[f][1]);
+        }
+        reach.emplace_back(sum, i);
+      }
+      std::nth_element(reach.begin(), reach.begin() + std::ptrdiff_t(kNearest), reach.end());
+      std::vector<RouteCorner> kept;
+      for (std::size_t i = 0; i < kNearest; ++i) kept.push_back(corners[reach[i].second]);
+      corners = std::move(kept);
+    };
+    nearest(goals, starts);
+    nearest(starts, goals);
     std::vector<std::pair<double, std::pair<std::size_t, std::size_t>>> pairs;
-    for (std::size_t a = 0; a < starts.size(); a += stride)
-      for (std::size_t b = 0; b < goals.size(); b += stride) {
+    pairs.reserve(starts.size() * goals.size());
+    for (std::size_t a = 0; a < starts.size(); ++a)
+      for (std::size_t b = 0; b < goals.size(); ++b) {
         double cost = 0;
         for (const Side& side : sides)
           cost += distance(side.nodes[std::size_t(starts[a].vertex)], side.nodes[std::size_t(goals[b].vertex)]);
