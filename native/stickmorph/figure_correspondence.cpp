@@ -1417,9 +1417,24 @@ FigureCorrespondence correspond_parts(const StickFigure& source, const StickFigu
       if (target_nesting.enclosing[std::size_t(b)].size() == depth) columns.push_back(b);
     if (rows.empty()) continue;
     if (rows.size() != columns.size()) {
-      topology_differs("the source has " + plural((long long)rows.size(), "part", "parts") + " inside " +
-                       plural((long long)depth, "other part", "other parts") + " and the target " +
-                       std::to_string(columns.size()));
+      // Name a part of the figure that has more at this depth: its smallest
+      // (the part that moved is more often a dot or a counter than the
+      // part around it).
+      const bool source_more = rows.size() > columns.size();
+      const std::vector<int>& more = source_more ? rows : columns;
+      const std::vector<PartPlace>& places = source_more ? source_places : target_places;
+      int named = more.front();
+      for (int part : more)
+        if (places[std::size_t(part)].size < places[std::size_t(named)].size) named = part;
+      const std::string where = depth == 0 ? std::string("at the top level (inside no other part)")
+                                           : "inside " + plural((long long)depth, "other part", "other parts");
+      throw IncompatibleFiguresError(
+          Incompatibility::NestingDiffers,
+          "correspond: the parts nest differently: the source has " + plural((long long)rows.size(), "part", "parts") +
+              " " + where + " and the target " + std::to_string(columns.size()) + " (" +
+              describe_part(source_more ? source_parts : target_parts, named) + " of the " +
+              (source_more ? "source" : "target") + " is one of them)",
+          source_more ? std::vector<int>{source_parts.vertices[std::size_t(named)].front()} : std::vector<int>{});
     }
     std::vector<std::vector<double>> cost(rows.size(), std::vector<double>(columns.size(), 0.0));
     for (std::size_t i = 0; i < rows.size(); ++i)
