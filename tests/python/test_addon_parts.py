@@ -143,6 +143,13 @@ def test_a_ring_in_a_ring_bakes_and_its_inner_ring_turns():
         xy, _ = core.project(frame, prepared.plane)
         centre = xy[:6].mean(axis=0)
         assert np.linalg.norm(xy[6:] - centre, axis=1).max() < np.linalg.norm(xy[:6] - centre, axis=1).min()
+    # One triangulation holds both rings (bridged): the helper's figure
+    # vertices are the rings' in the source and in the target.
+    assert morph.stats["parts"] == 2
+    source_nodes, target_nodes, triangles = core.triangulation_world(morph.triangulation, prepared)
+    assert np.abs(source_nodes[:10] - morph.frames_world[0]).max() <= 1e-9 * prepared.size
+    assert np.abs(target_nodes[:10] - morph.frames_world[-1]).max() <= 1e-9 * prepared.size
+    assert triangles.max() == len(source_nodes) - 1
 
 
 def test_parts_drawn_separately_are_matched_part_to_part():
