@@ -44,7 +44,9 @@
 //             edges in reverse order; bit 2 every target edge reversed; bit 3
 //             the derived target reflected (x -> -x; a mirror image, refused
 //             unless the figure is symmetric); bits 4-5 pin count (3 reads
-//             as 2); bits 6-7 unused
+//             as 2); bit 6: with bit 7, redraw the deformed target (each
+//             part turned and wobbled on its own) instead of the source;
+//             bit 7: the parts encoding (below)
 //     byte 1: exponent e = byte - 128: grid coordinates are multiples of 2^e
 //     then the source FIGURE:
 //       byte n - 1 (n = 1 + byte % 16 vertices), n (x, y) signed bytes times
@@ -68,6 +70,16 @@
 //       derived, t is s's own vertex in the target (a satisfiable pin when
 //       s is an original vertex), else t = (byte & 127) % (target count + 1)
 //   Missing bytes read as 0.
+//
+// binary with bit 7 of byte 0 set (parts): as above, but the source FIGURE
+//   is decode_parts_pair's source (fuzz_common.h: nested rings, dots and
+//   strokes in annuli, trees in the innermost ring, groups side by side; at
+//   most kMaxPartsVertices vertices) and, with bit 0, the independent
+//   target is a second such source. The derived target redraws the source,
+//   or with bit 6 the decoded target (every part turned on its own: not
+//   faithful), with the bytes of the derived target above. Matches of up to
+//   kMaxPartsMorphVertices vertices are morphed. Every seed from before has
+//   bit 7 clear and decodes as before.
 //
 // With STICKMORPH_FUZZ_TRACE=1 the target also prints the decoded pair as a
 // pair document of the JSON encoding and, on a match, the matched pair
@@ -99,6 +111,10 @@ namespace {
 // so that the fuzzer spends its time where the new code is.
 constexpr std::size_t kMaxMorphVertices = 40;
 constexpr int kMorphFrames = 3;
+// The parts encoding: figures of several parts are larger, and the bridges
+// between the parts are new code, so larger matches are morphed too.
+constexpr std::size_t kMaxPartsVertices = 64;
+constexpr std::size_t kMaxPartsMorphVertices = 96;
 constexpr double kPi = 3.14159265358979323846;
 
 struct PairInput {
@@ -108,6 +124,8 @@ struct PairInput {
   /// Binary encoding only: the target is a faithful redrawing of the source
   /// and every pin names a source vertex's own image (see the header).
   bool faithful = false;
+  /// Binary parts encoding (bit 7): matches up to kMaxPartsMorphVertices are morphed.
+  bool parts = false;
 };
 
 bool same_positions(const Vec2* a, const Vec2* b, std::size_t count) {
@@ -147,17 +165,7 @@ PairInput decode_json_pair(const std::string& text) {
   return input;
 }
 
-class ByteReader {
- public:
-  ByteReader(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
-  std::uint8_t next() { return position_ < size_ ? data_[position_++] : 0; }
-  int next_signed() { return static_cast<std::int8_t>(next()); }
-
- private:
-  const std::uint8_t* data_;
-  std::size_t size_;
-  std::size_t position_ = 0;
-};
+using ByteReader = fuzz::ByteStream;  // missing bytes read as 0
 
 using RawEdges = std::vector<std::array<std::int64_t, 2>>;
 
@@ -244,19 +252,32 @@ RawFigure redraw(const StickFigure& source, std::uint8_t flags, int exponent, By
   return target;
 }
 
+// The source of the parts encoding, and its decoded target (validated).
+RawFigure read_parts_figure(ByteReader& stream, RawFigure* deformed) {
+  fuzz::RawPartsPair pair = fuzz::decode_parts_pair(stream, kMaxPartsVertices);
+  if (deformed) *deformed = RawFigure{std::move(pair.target), pair.edges};
+  return RawFigure{std::move(pair.source), std::move(pair.edges)};
+}
+
 PairInput decode_binary_pair(const std::uint8_t* data, std::size_t size) {
   ByteReader bytes(data, size);
   const std::uint8_t flags = bytes.next();
   const int exponent = int(bytes.next()) - 128;
+  const bool parts = (flags >> 7) & 1;
+  const bool use_deformed = parts && ((flags >> 6) & 1);
   const bool independent = flags & 1;
   PairInput input;
-  RawFigure source = read_grid_figure(bytes, exponent);
+  input.parts = parts;
+  RawFigure deformed;
+  RawFigure source = parts ? read_parts_figure(bytes, &deformed) : read_grid_figure(bytes, exponent);
   input.source = make_stick_figure(std::move(source.vertices), source.edges, "source");
+  StickFigure base = input.source;
+  if (use_deformed && !independent) base = make_stick_figure(std::move(deformed.vertices), deformed.edges, "target");
   std::vector<int> image;  // derived target only: source vertex -> target vertex
   bool moved = false;
-  RawFigure target = independent ? read_grid_figure(bytes, exponent)
-                                 : redraw(input.source, flags, exponent, bytes, image, moved);
-  input.faithful = !independent && !((flags >> 3) & 1) && !moved;
+  RawFigure target = independent ? (parts ? read_parts_figure(bytes, nullptr) : read_grid_figure(bytes, exponent))
+                                 : redraw(base, flags, exponent, bytes, image, moved);
+  input.faithful = !independent && !((flags >> 3) & 1) && !moved && !use_deformed;
   const int ns = int(input.source.vertices.size()), nt = int(target.vertices.size());
   const int pins = std::min((flags >> 4) & 3, 2);
   for (int k = 0; k < pins; ++k) {
@@ -373,7 +394,7 @@ void correspond_pair(const PairInput& input) {
   if (fuzz::tracing())
     fuzz::trace("matched pair: {\"source\":" + fuzz::figure_to_json(c.source) +
                 ",\"target\":" + fuzz::figure_to_json(c.target) + "}");
-  if (m > kMaxMorphVertices) return;
+  if (m > (input.parts ? kMaxPartsMorphVertices : kMaxMorphVertices)) return;
 
   // From here on the pair is valid and matchable with these pins, so the
   // only acceptable error is the engine refusing a result it could not

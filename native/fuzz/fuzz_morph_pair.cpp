@@ -27,7 +27,7 @@
 //   compatible and reach the triangulation and the morph:
 //     byte 0: options: bits 0-1 Steiner method, 2-3 weights, 4-5 frames - 2,
 //             bit 6 target edges reversed in order and direction, bit 7
-//             unused
+//             the parts encoding below instead
 //     byte 1: n - 1 (n = 1 + byte % 16 vertices)
 //     byte 2: scale exponent e = byte - 128: coordinates are multiples of 2^e
 //     byte 3: enclosure sides - 3 (3 + byte % 8)
@@ -37,6 +37,15 @@
 //     then one byte k and k % (n + 1) extra edges (two bytes each, % n)
 //     then n (dx, dy) target moves, signed bytes times 2^(e - 4)
 //   Missing bytes read as 0.
+//
+// binary with bit 7 of byte 0 set (parts): figures of several parts,
+//   nested rings, dots and strokes in their annuli, small trees in the
+//   innermost ring, groups of them side by side, each part turned and
+//   wobbled on its own in the target (fuzz_common.h, decode_parts_pair):
+//     byte 0: options as above (bits 0-6)
+//     byte 1: enclosure sides - 3 (3 + byte % 8)
+//     then decode_parts_pair's bytes, at most kMaxPartsVertices vertices
+//   Every seed from before has bit 7 clear and decodes as before.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -106,7 +115,41 @@ class ByteReader {
   std::size_t position_ = 0;
 };
 
+constexpr std::size_t kMaxPartsVertices = 96;
+
+void set_binary_options(std::uint8_t flags, PairInput& input) {
+  static constexpr SteinerMethod kMethods[] = {SteinerMethod::Improved, SteinerMethod::Sg2001,
+                                               SteinerMethod::Aronov, SteinerMethod::Improved};
+  static constexpr WeightKind kWeights[] = {WeightKind::MeanValue, WeightKind::Uniform,
+                                            WeightKind::Floater, WeightKind::MeanValue};
+  input.options.steiner = kMethods[flags & 3];
+  input.options.weights = kWeights[(flags >> 2) & 3];
+  input.options.frames = 2 + ((flags >> 4) & 3);
+}
+
+PairInput decode_parts_binary_pair(const std::uint8_t* data, std::size_t size) {
+  fuzz::ByteStream bytes(data, size);
+  const std::uint8_t flags = bytes.next();
+  PairInput input;
+  input.options.enclosure_sides = 3 + bytes.next() % 8;
+  set_binary_options(flags, input);
+  fuzz::RawPartsPair pair = fuzz::decode_parts_pair(bytes, kMaxPartsVertices);
+  std::vector<std::array<std::int64_t, 2>> target_edges = pair.edges;
+  if ((flags >> 6) & 1) {
+    std::reverse(target_edges.begin(), target_edges.end());
+    for (auto& edge : target_edges) std::swap(edge[0], edge[1]);
+  }
+  input.source = make_stick_figure(std::move(pair.source), pair.edges, "source");
+  input.target = make_stick_figure(std::move(pair.target), target_edges, "target");
+  if (fuzz::tracing())
+    fuzz::trace("parts pair: " + std::to_string(pair.parts) + " parts, " +
+                std::to_string(input.source.vertices.size()) + " vertices: {\"source\":" +
+                fuzz::figure_to_json(input.source) + ",\"target\":" + fuzz::figure_to_json(input.target) + "}");
+  return input;
+}
+
 PairInput decode_binary_pair(const std::uint8_t* data, std::size_t size) {
+  if (size > 0 && (data[0] & 0x80)) return decode_parts_binary_pair(data, size);
   ByteReader bytes(data, size);
   const std::uint8_t flags = bytes.next();
   const int n = 1 + bytes.next() % 16;

@@ -324,7 +324,110 @@ def write_correspond_pair_seeds():
             f.write(binary_correspond(0, exponent, square, redrawn, [(0, 0x80)]))
 
 
+def parts_stream(exponent, offset, renumber, groups, target_turn=0, target_scale=32, target_shift=(0, 0)):
+    """decode_parts_pair's bytes (native/fuzz/fuzz_common.h) and the vertex
+    count they decode to. A group is a dict: rings (list of dicts: sides,
+    gap, phase, pull, collinear, turn, wobble, items: (kind, angle, span,
+    turn, wobble) tuples), core (None, ("dots", [(x, y, turn, wobble)]) or
+    ("tree", points, parents, extra, turn, wobble)), scale, gap, shift."""
+    def s8(v):
+        return v & 0xFF
+    data = bytes([exponent + 128, s8(offset[0]), s8(offset[1]), renumber, len(groups) - 1])
+    count = 0
+    for g in groups:
+        data += bytes([len(g["rings"]), g.get("scale", 0), g.get("gap", 64), s8(g.get("shift", 0))])
+        core = g.get("core")
+        if core is None:
+            data += bytes([0])
+        elif core[0] == "dots":
+            dots = core[1]
+            data += bytes([1]) if len(dots) == 1 else bytes([2, len(dots) - 1])
+            for x, y, turn, wobble in dots:
+                data += bytes([s8(x), s8(y), s8(turn), wobble])
+            count += len(dots)
+        else:
+            _, points, parents, extra, turn, wobble = core
+            data += bytes([3, len(points) - 2]) + b"".join(bytes([s8(x), s8(y)]) for x, y in points)
+            data += bytes(parents) + bytes([len(extra)]) + b"".join(bytes(e) for e in extra)
+            data += bytes([s8(turn), wobble])
+            count += len(points)
+        for r in g["rings"]:
+            data += bytes([r["sides"] - 3, r.get("gap", 64), r.get("phase", 0), r.get("pull", 0),
+                           r.get("collinear", 0), s8(r.get("turn", 0)), r.get("wobble", 0), len(r.get("items", ()))])
+            for kind, angle, span, turn, wobble in r.get("items", ()):
+                data += bytes([kind, angle, span, s8(turn), wobble])
+                count += 1 if kind % 4 in (0, 3) else 3 if kind % 4 == 2 else 2 + (kind // 4) % 5
+            count += r["sides"] + sum((r.get("collinear", 0) >> (j % 8)) & 1 for j in range(r["sides"]))
+        if not g["rings"] and core is None:
+            count += 1
+    data += bytes([target_turn, target_scale, s8(target_shift[0]), s8(target_shift[1])])
+    return data, count
+
+
+def parts_seed_figures():
+    """(name, parts stream, vertex count): figures of several parts."""
+    bullseye = [{"core": ("dots", [(0, 0, 90, 0)]), "rings": [
+        {"sides": 8, "gap": 40, "turn": 127, "items": [(0, 10, 0, -60, 0)]},
+        {"sides": 10, "gap": 60, "phase": 30, "turn": -100, "items": [(1 + 4 * 2, 50, 200, 40, 20)]},
+        {"sides": 12, "gap": 80, "turn": 64, "items": [(2, 200, 128, -128, 10), (3, 90, 0, 50, 0)]}]}]
+    deep = [{"core": ("tree", [(0, 0), (60, 0), (-40, 50), (-40, -50)], [0, 0, 0], [], 100, 30), "rings": [
+        {"sides": 3, "gap": 10, "collinear": 0b101, "turn": 127},
+        {"sides": 5, "gap": 5, "pull": 20, "turn": -127, "wobble": 40},
+        {"sides": 4, "gap": 25, "collinear": 0b1111, "turn": 60},
+        {"sides": 7, "gap": 2, "turn": -30, "items": [(0, 0, 0, 127, 0)]}]}]
+    side_by_side = [
+        {"scale": 0, "core": ("dots", [(0, 0, 0, 0)]), "rings": [{"sides": 6, "gap": 30, "turn": 100}]},
+        {"scale": 13, "gap": 2, "shift": 40, "core": ("dots", [(40, 0, 10, 0), (-40, 0, -10, 0)]),
+         "rings": [{"sides": 9, "gap": 50, "turn": -80, "items": [(1 + 4 * 4, 0, 255, 30, 0)]}]},
+        {"scale": 2, "gap": 0, "shift": -100, "rings": [], "core": None},
+        {"scale": 7, "gap": 1, "shift": 90, "rings": [{"sides": 3, "gap": 200, "turn": 127}, {"sides": 4, "gap": 3}]}]
+    strokes = [{"rings": [
+        {"sides": 11, "gap": 255, "items": [(1 + 4 * 3, 0, 90, 40, 0), (1 + 4 * 1, 128, 255, -90, 100), (2, 64, 10, 127, 0)]},
+        {"sides": 6, "gap": 200, "pull": 31, "turn": 90,
+         "items": [(1, 10, 30, 0, 0), (1 + 4 * 4, 100, 60, 127, 50), (0, 0, 0, 3, 0)]}]}]
+    return [
+        ("bullseye", *parts_stream(0, (0, 0), 0, bullseye, target_turn=32)),
+        ("deep_rings_tree", *parts_stream(-20, (0, 0), 0, deep, target_scale=40)),
+        ("groups_tiny_beside_huge_far", *parts_stream(10, (100, -77), 0, side_by_side, target_turn=200, target_shift=(5, 9))),
+        ("strokes_in_annuli", *parts_stream(0, (0, 0), 0, strokes)),
+        ("bullseye_renumbered", *parts_stream(3, (-128, 127), 77, bullseye, target_turn=128, target_scale=0)),
+        ("groups_renumbered", *parts_stream(-50, (1, 1), 201, side_by_side)),
+    ]
+
+
+def write_parts_seeds():
+    """Binary seeds of the parts encodings (bit 7 of byte 0) of both pair
+    targets, added to morph_pair/ and correspond_pair/ as parts_*.bin."""
+    morph = os.path.join(HERE, "morph_pair")
+    correspond = os.path.join(HERE, "correspond_pair")
+    for name, stream, n in parts_seed_figures():
+        # fuzz_morph_pair: byte 0 options | 0x80, byte 1 enclosure sides - 3.
+        for suffix, flags in (("", 0x80 | (1 << 4)), (".reversed_edges", 0x80 | (1 << 6)),
+                              (".sg2001_uniform", 0x80 | 1 | (1 << 2))):
+            if flags & 3 and n > 24:
+                continue
+            with open(os.path.join(morph, f"parts_{name}{suffix}.bin"), "wb") as f:
+                f.write(bytes([flags, 3]) + stream)
+        if n > 64:
+            continue
+        # fuzz_correspond_pair: byte 0 flags | 0x80, byte 1 exponent (of the
+        # redrawing's moves and shift: the parts' unit), then the redrawing: no subdivision, the
+        # numbering reversed, no moves, a turn; one pin to its own image.
+        redraw_bytes = bytes([0]) + bytes([1] * (n - 1)) + bytes([3]) + bytes(2 * n) + bytes([40, 40, 3, 250])
+        faithful = bytes([0x80 | (1 << 4), stream[0]]) + stream + redraw_bytes + bytes([0, 0x80])
+        with open(os.path.join(correspond, f"parts_{name}.faithful.pinned.bin"), "wb") as f:
+            f.write(faithful)
+        subdivided = bytes([0x80 | (1 << 6) | 2, stream[0]]) + stream + bytes([3, 0, 100, 1, 50, 2, 200]) + bytes([5] * n)
+        with open(os.path.join(correspond, f"parts_{name}.deformed_redrawn.bin"), "wb") as f:
+            f.write(subdivided)
+    _, a, _ = parts_seed_figures()[0]
+    _, b, _ = parts_seed_figures()[3]
+    with open(os.path.join(correspond, "parts_bullseye_vs_strokes.independent.bin"), "wb") as f:
+        f.write(bytes([0x81, 128]) + a[:-4] + bytes(4) + b)
+
+
 if __name__ == "__main__":
     write_figure_reader_seeds()
     write_morph_pair_seeds()
     write_correspond_pair_seeds()
+    write_parts_seeds()
