@@ -403,9 +403,12 @@ struct PinPlace {
 
 /// Checks the pins against the figures (InvalidArgumentError) and sorts them
 /// into node pins (source node -> target node) and chain pins.
-void classify_pins(const Skeleton& source, const Skeleton& target, const std::vector<VertexPin>& pins,
-                   std::vector<std::pair<int, int>>& node_pins, std::vector<PinPlace>& chain_pins) {
-  const int ns = int(source.figure->vertices.size()), nt = int(target.figure->vertices.size());
+/// The pins' own rules, before any matching (InvalidArgumentError): each
+/// names vertices that exist, pins no vertex twice, and joins vertices of
+/// one kind (nodes of the same degree, or two vertices of degree 2).
+void check_pins(const std::vector<int>& source_degree, const std::vector<int>& target_degree,
+                const std::vector<VertexPin>& pins) {
+  const int ns = int(source_degree.size()), nt = int(target_degree.size());
   std::vector<int> source_seen(std::size_t(ns), -1), target_seen(std::size_t(nt), -1);
   for (std::size_t k = 0; k < pins.size(); ++k) {
     const VertexPin& pin = pins[k];
@@ -421,12 +424,20 @@ void classify_pins(const Skeleton& source, const Skeleton& target, const std::ve
     if (target_seen[std::size_t(pin.target)] >= 0)
       throw InvalidArgumentError("correspond: target vertex " + std::to_string(pin.target) + " is pinned twice");
     source_seen[std::size_t(pin.source)] = target_seen[std::size_t(pin.target)] = int(k);
-    const int ds = source.degree[std::size_t(pin.source)], dt = target.degree[std::size_t(pin.target)];
+    const int ds = source_degree[std::size_t(pin.source)], dt = target_degree[std::size_t(pin.target)];
     if ((ds == 2) != (dt == 2) || (ds != 2 && ds != dt))
       throw InvalidArgumentError("correspond: " + name + " joins a vertex of degree " + std::to_string(ds) +
                                  " to one of degree " + std::to_string(dt) +
                                  " (a junction or end matches only one of the same degree, a vertex inside a "
                                  "stroke only one inside a stroke)");
+  }
+}
+
+void classify_pins(const Skeleton& source, const Skeleton& target, const std::vector<VertexPin>& pins,
+                   std::vector<std::pair<int, int>>& node_pins, std::vector<PinPlace>& chain_pins) {
+  check_pins(source.degree, target.degree, pins);
+  for (const VertexPin& pin : pins) {
+    const int ds = source.degree[std::size_t(pin.source)];
     if (ds != 2) {
       node_pins.emplace_back(pin.source, pin.target);
       continue;
@@ -1288,19 +1299,18 @@ FigureCorrespondence correspond_parts(const StickFigure& source, const StickFigu
                                       const FigureParts& target_parts) {
   const auto start = std::chrono::steady_clock::now();
   const int k = source_parts.count();
+  // The pins' own rules first: a bad pin is the caller's mistake whatever
+  // the figures are.
+  auto degrees = [](const StickFigure& f) {
+    std::vector<int> degree(f.vertices.size(), 0);
+    for (const Edge& e : f.edges) ++degree[std::size_t(e[0])], ++degree[std::size_t(e[1])];
+    return degree;
+  };
+  check_pins(degrees(source), degrees(target), options.pins);
   if (target_parts.count() != k)
     topology_differs("the source has " + plural(k, "part", "parts") + " and the target " +
                      std::to_string(target_parts.count()) + " (parts are the connected pieces of a figure)");
-  const int ns = int(source.vertices.size()), nt = int(target.vertices.size());
-  for (const VertexPin& pin : options.pins) {
-    const std::string name = "pin " + std::to_string(pin.source) + ":" + std::to_string(pin.target);
-    if (pin.source < 0 || pin.source >= ns)
-      throw InvalidArgumentError("correspond: " + name + ": the source has no vertex " + std::to_string(pin.source) +
-                                 " (it has " + plural(ns, "vertex", "vertices") + ")");
-    if (pin.target < 0 || pin.target >= nt)
-      throw InvalidArgumentError("correspond: " + name + ": the target has no vertex " + std::to_string(pin.target) +
-                                 " (it has " + plural(nt, "vertex", "vertices") + ")");
-  }
+  const int ns = int(source.vertices.size());
 
   std::vector<PartFigure> source_pieces, target_pieces;
   std::vector<PartShape> source_shapes, target_shapes;
@@ -1313,6 +1323,32 @@ FigureCorrespondence correspond_parts(const StickFigure& source, const StickFigu
   // Nesting depth: how many parts enclose a part. Matched parts must agree.
   const PartNesting source_nesting = part_nesting(source, decompose(source), source_parts);
   const PartNesting target_nesting = part_nesting(target, decompose(target), target_parts);
+  // And what they hold: a part's shape with the sorted contents of the
+  // parts directly inside it, recursively, so that a square holding a
+  // triangle is never paired with an empty hexagon (its triangle would have
+  // nowhere to go).
+  auto contents = [](const std::vector<PartShape>& shapes, const PartNesting& nesting) {
+    const std::size_t count = shapes.size();
+    std::vector<std::string> text(count);
+    std::vector<std::size_t> order(count);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return nesting.enclosing[a].size() > nesting.enclosing[b].size();
+    });
+    std::vector<std::vector<std::string>> inside(count);
+    for (std::size_t part : order) {  // the deepest first
+      std::sort(inside[part].begin(), inside[part].end());
+      std::string t = std::to_string(shapes[part].cycles) + ":";
+      for (int d : shapes[part].node_degrees) t += std::to_string(d) + ",";
+      t += "(";
+      for (const std::string& child : inside[part]) t += child + ";";
+      text[part] = t + ")";
+      if (nesting.parent_part[part] >= 0) inside[std::size_t(nesting.parent_part[part])].push_back(text[part]);
+    }
+    return text;
+  };
+  const std::vector<std::string> source_contents = contents(source_shapes, source_nesting);
+  const std::vector<std::string> target_contents = contents(target_shapes, target_nesting);
 
   // Pins pair parts.
   std::vector<int> forced(std::size_t(k), -1), forced_by(std::size_t(k), -1);
@@ -1335,7 +1371,7 @@ FigureCorrespondence correspond_parts(const StickFigure& source, const StickFigu
   const std::vector<PartPlace> source_places = part_places(source, source_parts);
   const std::vector<PartPlace> target_places = part_places(target, target_parts);
   auto allowed = [&](int a, int b) {
-    return source_shapes[std::size_t(a)] == target_shapes[std::size_t(b)] &&
+    return source_contents[std::size_t(a)] == target_contents[std::size_t(b)] &&
            source_nesting.enclosing[std::size_t(a)].size() == target_nesting.enclosing[std::size_t(b)].size() &&
            (forced[std::size_t(a)] < 0 || forced[std::size_t(a)] == b) &&
            (forced_by[std::size_t(b)] < 0 || forced_by[std::size_t(b)] == a);
@@ -1458,7 +1494,7 @@ FigureCorrespondence correspond_parts(const StickFigure& source, const StickFigu
         std::string why = "no part of the target is left for " + describe_part(source_parts, a) + " of the source (" +
                           describe_shape(shape, source_parts.vertices[std::size_t(a)].size()) + ", inside " +
                           plural((long long)depth, "other part", "other parts") +
-                          ") that has its shape and lies in the part matched to its parent";
+                          ") that has its shape, holds the same parts and lies in the part matched to its parent";
         if (forced[std::size_t(a)] >= 0) {
           why += "; " + forcing_pin[std::size_t(a)] + " pairs it with " +
                  describe_part(target_parts, forced[std::size_t(a)]) + " of the target";

@@ -196,14 +196,52 @@ TEST_CASE("correspond_figures on parts says what cannot be matched", "[part_brid
     CHECK_THROWS_AS(correspond_figures(source, target), IncompatibleFiguresError);
   }
   SECTION("pins that pair one part with two") {
-    const StickFigure target = parts_figure({{circle(0, 0, 2, 12)}, {{{3, 0}}}});
+    const StickFigure rings = parts_figure({{circle(0, 0, 2, 12)}, {circle(5, 0, 1, 6)}});
     CorrespondenceOptions options;
-    options.pins = {{0, 0}, {12, 5}};
+    options.pins = {{0, 0}, {1, 12}};  // ring 0's vertices to ring 0 and to ring 1
     try {
-      correspond_figures(source, target, options);
+      correspond_figures(rings, rings, options);
       FAIL("matched");
     } catch (const IncompatibleFiguresError& error) {
       CHECK(error.kind() == Incompatibility::PinsUnsatisfiable);
     }
   }
+}
+
+TEST_CASE("bridges round a lone vertex keep their order in both figures", "[part_bridges]") {
+  // Found by scripts/parts_stress.py: five dots, three bridged to vertex 1.
+  // Its wedges between bridges were once taken the wrong way round, and the
+  // bridged figures then had other cyclic orders at vertex 1.
+  const StickFigure source = figure({{327, -528}, {0, 0}, {8, -100}, {-1, 0}, {-4, 2}}, {});
+  const StickFigure target = figure({{850, 729}, {0, 0}, {197, 47}, {-1, 7}, {5, 1}}, {});
+  const BridgedFigures bridged = bridge_parts(source, decompose(source), target);
+  check_bridged(bridged, source, target);
+  check_morph(source, target, MorphMethod::Rigid);
+}
+
+TEST_CASE("correspond_figures pairs parts by what they hold, not only by place", "[part_bridges][correspond_figures]") {
+  // Found by the parts fuzzer: an empty hexagon and a square holding a
+  // triangle swap places. By place the square would go to the hexagon and
+  // its triangle would have nowhere to go.
+  const StickFigure source = parts_figure(
+      {{circle(0, 0, 1.4, 6)}, {{{9, -1}, {11, -1}, {11, 1}, {9, 1}}}, {{{9.5, -0.5}, {10.5, -0.5}, {10, 0.5}}}});
+  const StickFigure target = parts_figure(
+      {{circle(10, 0, 1.4, 6)}, {{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}}, {{{-0.5, -0.5}, {0.5, -0.5}, {0, 0.5}}}});
+  const FigureCorrespondence c = correspond_figures(source, target);
+  CHECK(is_valid(c, source, target));
+  const FigureParts target_parts = figure_parts(target);
+  // Source vertex 6 (a corner of the square) is matched into the target's square, part 1.
+  for (std::size_t i = 0; i < c.source_places.size(); ++i)
+    if (c.source_places[i].vertex == 6) {
+      REQUIRE(c.target_places[i].vertex >= 0);
+      CHECK(target_parts.part_of_vertex[std::size_t(c.target_places[i].vertex)] == 1);
+    }
+}
+
+TEST_CASE("correspond_figures checks the pins before it compares the parts", "[part_bridges][correspond_figures]") {
+  const StickFigure source = polyline({{0, 0}, {1, 0}});
+  const StickFigure target = figure({{0, 0}, {1, 0}}, {});
+  CorrespondenceOptions options;
+  options.pins = {{0, 5}};
+  CHECK_THROWS_AS(correspond_figures(source, target, options), InvalidArgumentError);
 }

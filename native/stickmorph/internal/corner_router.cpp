@@ -76,7 +76,15 @@ CornerRouter& CornerRouter::operator=(CornerRouter&&) noexcept = default;
 int CornerRouter::add_node(const Vec2& position) { return impl_->add_node(position); }
 
 void CornerRouter::add_constraint(int a, int b) {
-  impl_->cdt.insert_constraint(impl_->handle[std::size_t(a)], impl_->handle[std::size_t(b)]);
+  try {
+    impl_->cdt.insert_constraint(impl_->handle[std::size_t(a)], impl_->handle[std::size_t(b)]);
+  } catch (const std::exception& error) {
+    // CGAL refuses a constraint that crosses another or passes through a
+    // node (No_constraint_intersection_tag). Callers check their segments
+    // exactly first, so this is a broken promise, not a bad input.
+    throw InternalError("corner router: the segment from node " + std::to_string(a) + " to node " +
+                        std::to_string(b) + " meets a constraint or node: " + error.what());
+  }
 }
 
 bool CornerRouter::route(const RouteCorner& from, const RouteCorner& to, std::vector<Vec2>& bends) const {

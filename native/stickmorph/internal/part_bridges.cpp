@@ -96,9 +96,34 @@ struct Side {
     return admits(from, q) && admits(to, p) && clear(from.vertex, p, to.vertex, q);
   }
 
+  // Exact: is the path from corner `from` through `bends` to corner `to`
+  // a valid bridge? It leaves and enters inside the corners' wedges, meets
+  // nothing made so far but its two end vertices' own edges there, and does
+  // not meet itself (consecutive segments share only their common point).
+  bool path_clear(const RouteCorner& from, const RouteCorner& to, const std::vector<Vec2>& bends) const {
+    std::vector<Vec2> path{nodes[std::size_t(from.vertex)]};
+    path.insert(path.end(), bends.begin(), bends.end());
+    path.push_back(nodes[std::size_t(to.vertex)]);
+    const std::size_t segments_count = path.size() - 1;
+    if (!admits(from, path[1]) || !admits(to, path[segments_count - 1])) return false;
+    for (std::size_t i = 0; i < segments_count; ++i) {
+      if (!clear(i == 0 ? from.vertex : -1, path[i], i + 1 == segments_count ? to.vertex : -1, path[i + 1]))
+        return false;
+      for (std::size_t j = i + 1; j < segments_count; ++j) {
+        const SegmentContact contact = segment_contact(path[i], path[i + 1], path[j], path[j + 1]);
+        if (contact == SegmentContact::Disjoint) continue;
+        if (j == i + 1 && contact == SegmentContact::Touching) continue;
+        return false;
+      }
+    }
+    return true;
+  }
+
   // A routed path, shortened greedily: from each point, the farthest later
   // point that a valid straight shortcut reaches (only a few are tried, so
-  // that a long path costs linear work).
+  // that a long path costs linear work). The shortened path, or else the
+  // route itself, if it passes path_clear (a midpoint rounded across an
+  // edge, or a shortcut across the path's own later part, would not).
   bool routed(const RouteCorner& from, const RouteCorner& to, std::vector<Vec2>& bends) const {
     std::vector<Vec2> raw;
     if (!router.route(from, to, raw)) return false;
@@ -106,26 +131,36 @@ struct Side {
     path.insert(path.end(), raw.begin(), raw.end());
     path.push_back(nodes[std::size_t(to.vertex)]);
     const std::size_t last = path.size() - 1;
-    constexpr std::size_t kTries = 24;
+    // A straight shortcut from point i to point j, exactly checked.
+    auto valid = [&](std::size_t i, std::size_t j) {
+      if (i == 0 && !admits(from, path[j])) return false;
+      if (j == last && !admits(to, path[i])) return false;
+      return clear(i == 0 ? from.vertex : -1, path[i], j == last ? to.vertex : -1, path[j]);
+    };
     bends.clear();
     std::size_t i = 0;
     while (i < last) {
+      // The end if it is in sight; else the farthest point in sight found
+      // by doubling the step and then halving the gap (O(log) checks).
       std::size_t next = i + 1;
-      const std::size_t lowest = i + 2;
-      for (std::size_t j = last; j >= lowest && j + kTries > last; --j) {
-        const int p_node = i == 0 ? from.vertex : -1;
-        const int q_node = j == last ? to.vertex : -1;
-        if (i == 0 && !admits(from, path[j])) continue;
-        if (j == last && !admits(to, path[i])) continue;
-        if (clear(p_node, path[i], q_node, path[j])) {
-          next = j;
-          break;
+      if (i + 2 <= last && valid(i, last)) {
+        next = last;
+      } else {
+        std::size_t good = i + 1, step = 2;
+        while (i + step < last && valid(i, i + step)) good = i + step, step *= 2;
+        std::size_t bad = std::min(i + step, last);
+        while (bad - good > 1) {
+          const std::size_t middle = good + (bad - good) / 2;
+          (valid(i, middle) ? good : bad) = middle;
         }
+        next = good;
       }
       if (next < last) bends.push_back(path[next]);
       i = next;
     }
-    return true;
+    if (path_clear(from, to, bends)) return true;
+    bends = raw;
+    return path_clear(from, to, bends);
   }
 
   // A corner of the figure as it is now: the bridges that leave its vertex
@@ -152,9 +187,11 @@ struct Side {
     });
     std::vector<RouteCorner> pieces;
     if (c.next < 0) {
-      // A lone vertex with bridges: the wedges between them.
+      // A lone vertex with bridges: the wedges between consecutive ones,
+      // each from one bridge counter-clockwise to the next (one bridge: all
+      // round, a tip).
       for (std::size_t i = 0; i < inside.size(); ++i)
-        pieces.push_back({c.vertex, inside[i], inside[(i + inside.size() - 1) % inside.size()]});
+        pieces.push_back({c.vertex, inside[i], inside[(i + 1) % inside.size()]});
       return pieces;
     }
     int from = c.next;
@@ -302,7 +339,16 @@ BridgedFigures bridge_parts(const StickFigure& source, const Decomposition& dec,
         std::vector<Vec2> bends[2];
         if (!sides[0].routed(from, to, bends[0]) || !sides[1].routed(from, to, bends[1])) continue;
         const std::size_t most = std::max(bends[0].size(), bends[1].size());
-        if (most < best_bends) {
+        if (most >= best_bends) continue;
+        // As many bends in both: the shorter path padded with straight ones,
+        // checked again (a padded midpoint is rounded).
+        bool padded_clear = true;
+        for (int f = 0; f < 2 && padded_clear; ++f) {
+          pad_bends(sides[f].nodes[std::size_t(from.vertex)], sides[f].nodes[std::size_t(to.vertex)], bends[f],
+                    int(most));
+          padded_clear = sides[f].path_clear(from, to, bends[f]);
+        }
+        if (padded_clear) {
           best_bends = most;
           best[0] = std::move(bends[0]);
           best[1] = std::move(bends[1]);
@@ -311,13 +357,9 @@ BridgedFigures bridge_parts(const StickFigure& source, const Decomposition& dec,
         }
       }
       if (best_bends == std::numeric_limits<std::size_t>::max())
-        throw InternalError("part bridges: no path joins " + describe_part(parts, part) +
-                            " to the face it lies in, although the figures nest alike");
-      for (int s = 0; s < 2; ++s) {
-        pad_bends(sides[s].nodes[std::size_t(best_from.vertex)], sides[s].nodes[std::size_t(best_to.vertex)], best[s],
-                  int(best_bends));
-        sides[s].add(best_from.vertex, best_to.vertex, best[s]);
-      }
+        throw VerificationError("bridging the figure's parts: no path that is valid in exact arithmetic joins " +
+                                describe_part(parts, part) + " to the face it lies in in both figures");
+      for (int f = 0; f < 2; ++f) sides[f].add(best_from.vertex, best_to.vertex, best[f]);
       result.bends += int(best_bends);
     }
     ++result.bridges;
