@@ -227,10 +227,6 @@ struct Side {
 
 double distance(const Vec2& a, const Vec2& b) { return std::hypot(a[0] - b[0], a[1] - b[1]); }
 
-struct CornerRef {
-  int sequence, index;
-};
-
 }  // namespace
 
 BridgedFigures bridge_parts(const StickFigure& source, const Decomposition& dec, const StickFigure& target) {
