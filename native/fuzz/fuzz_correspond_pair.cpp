@@ -332,6 +332,29 @@ std::string describe_pins(const std::vector<VertexPin>& pins) {
 
 void morph_matched(const PairInput& input, const FigureCorrespondence& c);
 
+// True when two vertices of one figure are closer than 2^-40 of that
+// figure's extent. The header lets correspond_figures refuse such a pair
+// with a VerificationError: the dummies it places on the other figure's
+// edges (a + f (b - a), f from arc length) cannot then be told apart in
+// double precision. Above this resolution a VerificationError is a finding.
+bool below_resolution(const StickFigure& figure) {
+  if (figure.vertices.size() < 2) return false;
+  double lo[2] = {figure.vertices[0][0], figure.vertices[0][1]}, hi[2] = {lo[0], lo[1]};
+  for (const Vec2& v : figure.vertices)
+    for (int axis = 0; axis < 2; ++axis) {
+      lo[axis] = std::min(lo[axis], v[axis]);
+      hi[axis] = std::max(hi[axis], v[axis]);
+    }
+  const double extent = std::max(hi[0] - lo[0], hi[1] - lo[1]);
+  const double finest = std::ldexp(extent, -40);
+  for (std::size_t i = 0; i < figure.vertices.size(); ++i)
+    for (std::size_t j = i + 1; j < figure.vertices.size(); ++j)
+      if (std::max(std::abs(figure.vertices[i][0] - figure.vertices[j][0]),
+                   std::abs(figure.vertices[i][1] - figure.vertices[j][1])) < finest)
+        return true;
+  return false;
+}
+
 // The decoded pair as a pair document of the JSON encoding, so that a
 // binary finding can be read, described and replayed as figures.
 std::string pair_document(const PairInput& input) {
@@ -367,9 +390,15 @@ void correspond_pair(const PairInput& input) {
     return;
   } catch (const InternalError&) {
     throw;
+  } catch (const VerificationError& error) {
+    if (!below_resolution(input.source) && !below_resolution(input.target))
+      fuzz::report_finding(std::string("correspond_figures refused a pair above the resolution limit: ") +
+                           error.what());
+    fuzz::trace(std::string("below resolution: ") + error.what());
+    return;
   } catch (const Error& error) {
     // Both figures are valid (make_stick_figure), so an InvalidFigureError
-    // or a VerificationError would be about something the engine built.
+    // would be about something the engine built.
     fuzz::report_finding(std::string("correspond_figures on valid figures threw another error: ") + error.what());
   }
   if (!well_formed)

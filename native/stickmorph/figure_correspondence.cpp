@@ -934,7 +934,8 @@ std::vector<Item> resample(const Track& s, const Track& t, const ChainMatch& mat
 }
 
 /// Where a place lies in the figure: its vertex, or a dummy on an edge.
-MatchedPlace matched_place(const StickFigure& figure, const Track& track, const Place& place, Vec2& position) {
+MatchedPlace matched_place(const StickFigure& figure, const Track& track, const Place& place, Vec2& position,
+                           char* track_runs_along = nullptr) {
   MatchedPlace result;
   if (place.vertex >= 0) {
     result.vertex = place.vertex;
@@ -946,11 +947,53 @@ MatchedPlace matched_place(const StickFigure& figure, const Track& track, const 
   const int edge = track.edges[k];
   // Reported along edges[edge] as listed.
   const bool along = figure.edges[std::size_t(edge)][0] == a;
+  if (track_runs_along) *track_runs_along = along;
   result.edge = edge;
   result.fraction = along ? f : 1.0 - f;
   const Edge& e = figure.edges[std::size_t(edge)];
   position = point_on(figure.vertices[std::size_t(e[0])], figure.vertices[std::size_t(e[1])], result.fraction);
   return result;
+}
+
+/// Points placed inside one edge (dummies on a source edge, or source
+/// vertices on a target edge), in the chain's order: a run of consecutive
+/// places on the same edge. Where rounding a + f (b - a) merges two of them,
+/// or one with an end of the edge (an edge far longer than the spacing of
+/// the other drawing's vertices: 10 target vertices within 1e-16 of the
+/// edge's length), the run is spread evenly along the whole edge instead,
+/// in the same order. Only such a nearly degenerate run moves; the matched
+/// figure is validated exactly afterwards all the same.
+void separate_on_edges(const StickFigure& figure, std::vector<MatchedPlace>& places, std::vector<Vec2>& at,
+                       const std::vector<char>& track_runs_along) {
+  std::size_t begin = 0;
+  while (begin < places.size()) {
+    if (places[begin].vertex >= 0 || places[begin].edge < 0) {
+      ++begin;
+      continue;
+    }
+    const int edge = places[begin].edge;
+    std::size_t end = begin + 1;
+    while (end < places.size() && places[end].vertex < 0 && places[end].edge == edge) ++end;
+    const Edge& e = figure.edges[std::size_t(edge)];
+    const Vec2& a = figure.vertices[std::size_t(e[0])];
+    const Vec2& b = figure.vertices[std::size_t(e[1])];
+    // The track runs along the edge as listed or against it (not read from
+    // the fractions: rounded ones tie).
+    const bool along = track_runs_along[begin] != 0;
+    const Vec2& first = along ? a : b;
+    const Vec2& last = along ? b : a;
+    bool merged = at[begin] == first || at[end - 1] == last;
+    for (std::size_t k = begin + 1; k < end && !merged; ++k) merged = at[k] == at[k - 1];
+    if (merged) {
+      const double count = double(end - begin + 1);
+      for (std::size_t k = begin; k < end; ++k) {
+        const double g = double(k - begin + 1) / count;
+        places[k].fraction = along ? g : 1.0 - g;
+        at[k] = point_on(a, b, places[k].fraction);
+      }
+    }
+    begin = end;
+  }
 }
 
 double milliseconds_since(std::chrono::steady_clock::time_point start) {
@@ -1083,23 +1126,33 @@ FigureCorrespondence correspond_connected(const StickFigure& source, const Stick
     ChainMatch anchored = match;
     anchor_corners(source, st, target, tt, anchored);
     const std::vector<Item> items = resample(st, tt, anchored, all_pins);
+    // Where each item lies on the other drawing, then kept apart where
+    // rounding would merge points of one edge (separate_on_edges).
+    std::vector<MatchedPlace> source_side(items.size()), target_side(items.size());
+    std::vector<Vec2> source_side_at(items.size()), target_side_at(items.size());
+    std::vector<char> source_along(items.size(), 1), target_along(items.size(), 1);
+    for (std::size_t k = 0; k < items.size(); ++k) {
+      if (items[k].source.vertex < 0)
+        source_side[k] = matched_place(source, st, items[k].source, source_side_at[k], &source_along[k]);
+      target_side[k] = matched_place(target, tt, items[k].target, target_side_at[k], &target_along[k]);
+    }
+    separate_on_edges(source, source_side, source_side_at, source_along);
+    separate_on_edges(target, target_side, target_side_at, target_along);
     std::vector<int> sequence;
     if (!st.closed) sequence.push_back(st.vertices.front());
-    for (const Item& item : items) {
+    for (std::size_t k = 0; k < items.size(); ++k) {
+      const Item& item = items[k];
       if (item.source.vertex >= 0) {
         const int v = item.source.vertex;
-        Vec2 position;
-        result.target_places[std::size_t(v)] = matched_place(target, tt, item.target, position);
-        target_positions[std::size_t(v)] = position;
+        result.target_places[std::size_t(v)] = target_side[k];
+        target_positions[std::size_t(v)] = target_side_at[k];
         if (item.target.vertex >= 0) {
           target_partner[std::size_t(v)] = item.target.vertex;
           matched_of_target[std::size_t(item.target.vertex)] = v;
         }
         sequence.push_back(v);
       } else {
-        PendingDummy dummy{item.target.vertex, {}, {}};
-        dummy.source_place = matched_place(source, st, item.source, dummy.source_position);
-        dummies.push_back(dummy);
+        dummies.push_back(PendingDummy{item.target.vertex, source_side[k], source_side_at[k]});
         sequence.push_back(-1 - item.target.vertex);
       }
     }
@@ -1134,9 +1187,8 @@ FigureCorrespondence correspond_connected(const StickFigure& source, const Stick
     result.source = make_stick_figure(std::move(source_positions), edges, source.name);
     result.target = make_stick_figure(std::move(target_positions), edges, target.name);
   } catch (const InvalidFigureError& error) {
-    throw InternalError(std::string("correspond: the matched figure is not a valid figure (a dummy vertex lost to "
-                                    "rounding on a nearly degenerate figure?): ") +
-                        error.what());
+    throw VerificationError(std::string("correspond: the matched figure cannot be drawn in floating point: ") +
+                            error.what() + " (vertices of one drawing closer together than the other's rounding)");
   }
   const CompatibilityReport report = check_compatibility(result.source, result.target);
   if (!report.compatible())
@@ -1574,7 +1626,10 @@ FigureCorrespondence correspond_parts(const StickFigure& source, const StickFigu
     result.source = make_stick_figure(std::move(source_positions), edges, source.name);
     result.target = make_stick_figure(std::move(target_positions), edges, target.name);
   } catch (const InvalidFigureError& error) {
-    throw InternalError(std::string("correspond: the matched parts do not make a valid figure: ") + error.what());
+    // Each matched part is valid; together they can only fail where a dummy,
+    // rounded off its edge, touches a part close by.
+    throw VerificationError(std::string("correspond: the matched parts cannot be drawn in floating point: ") +
+                            error.what());
   }
   // Each part pair is compatible by construction; the nesting is the pair's
   // own (the matched part i is the source's part i), and is checked here.

@@ -106,9 +106,12 @@ struct CorrespondenceOptions {
 ///         what differs (kind TopologyDiffers: loops, ends, junction
 ///         degrees, the arrangement of the chains; MirrorImage; ExteriorDiffers;
 ///         PinsUnsatisfiable: no matching respects every pin);
-///         InternalError if the matched pair it built is not valid and
-///         compatible (a bug, or a dummy vertex lost to rounding on a
-///         nearly degenerate figure).
+///         VerificationError if the matched figure is not valid in floating
+///         point (a nearly degenerate drawing: vertices of one figure closer
+///         together than the other figure's edges can resolve, after the
+///         dummies of a merged run were spread along their edge);
+///         InternalError if the matched pair is valid but not compatible
+///         (a bug).
 FigureCorrespondence correspond_figures(const StickFigure& source, const StickFigure& target,
                                         const CorrespondenceOptions& options = {});
 
