@@ -292,6 +292,8 @@ int run_morph(const ParsedArguments& arguments) {
                                    " has no effect with --method linear (the straight-line morph uses no "
                                    "triangulation)");
   if (option_value(arguments, "--no-verify")) options.verify = false;
+  if (const std::string* name = option_value(arguments, "--frame-check"))
+    options.frame_check = parse_frame_check(*name);
   if (const std::string* name = option_value(arguments, "--steiner")) options.steiner = parse_steiner_method(*name);
   options.enclosure_sides = integer_option(arguments, "--enclosure-sides");
   if (const std::string* name = option_value(arguments, "--rotation"))
@@ -412,6 +414,9 @@ const std::vector<CommandSpec>& commands() {
         {"--correspond", "", "MODE", kCorrespondHelp},
         {"--pin", "", "S:T", kPinHelp, true},
         {"--no-verify", "", "", "skip the exact check of every frame"},
+        {"--frame-check", "", "MODE",
+         "certificate (default: every triangle counter-clockwise in the convex enclosure, a proof in O(T)) "
+         "or full (also rebuild each frame's figure and compare it with the source)"},
         {"--svg", "", "FILE", "also draw a filmstrip of about seven frames"},
         {"--svg-triangulation", "", "", "draw the triangulation under the filmstrip's figures"},
         {"--svg-compare-linear", "", "", "draw the straight-line morph as a second filmstrip row (Figure 8d)"}},
@@ -423,7 +428,9 @@ const std::vector<CommandSpec>& commands() {
        "translation and then follows an as-rigid-as-possible motion of the figure\n"
        "wherever that is valid, at even speed. Every frame\n"
        "is checked in exact arithmetic to be a stick figure with the source's cyclic\n"
-       "sequences unless --no-verify is given; a frame that fails is refined or the\n"
+       "sequences unless --no-verify is given (by default through the triangulation:\n"
+       "all its triangles counter-clockwise inside the convex enclosure prove it;\n"
+       "--frame-check full also rebuilds the figure); a frame that fails is refined or the\n"
        "command fails naming it. With --method linear the vertices move on straight\n"
        "lines and the frames that self-intersect are listed in stats.invalid_frames.",
        &run_morph},

@@ -35,7 +35,8 @@ sm::MorphStickFiguresOptions to_morph_options(const py::object& frames, const py
                                               const py::object& method, const py::object& verify,
                                               const py::object& rotation, const py::object& turns,
                                               const py::object& easing, const py::object& correspond = py::none(),
-                                              const py::object& pins = py::none()) {
+                                              const py::object& pins = py::none(),
+                                              const py::object& frame_check = py::none()) {
   sm::MorphStickFiguresOptions options;
   options.spelling = kKeyword;
   // Here rather than only in the engine so that the message quotes a Python
@@ -45,6 +46,7 @@ sm::MorphStickFiguresOptions to_morph_options(const py::object& frames, const py
   if (!steiner.is_none()) options.steiner = sm::parse_steiner_method(to_name(steiner, "steiner"));
   if (!weights.is_none()) options.weights = sm::parse_weight_kind(to_name(weights, "weights"));
   if (!verify.is_none()) options.verify = to_flag(verify, "verify");
+  if (!frame_check.is_none()) options.frame_check = sm::parse_frame_check(to_name(frame_check, "frame_check"));
   if (!enclosure_sides.is_none()) {
     const long long sides = to_count(enclosure_sides, "enclosure_sides");
     // Range checked by check_morph_options below, after the refusal of
@@ -269,7 +271,10 @@ class MorphSolverBinding {
         source_(std::move(source)),
         decomposition_(sm::decompose(source_)),
         solver_(tri_, kind),
-        kind_(kind) {}
+        kind_(kind) {
+    // The frame certificate's precondition (frame_certificate.h).
+    sm::require_figure_edges(tri_, source_);
+  }
 
   // All node positions at t; see the docstring for the contract. The frame
   // is made and checked exactly as a morph's frame (checked_morph_frame).
@@ -349,15 +354,16 @@ Args:
   edges: #E by 2 integer array-like, the source figure's edges over the
     first n nodes, as given to triangulate_figures. Needed for the frame
     check (a triangulation does not say which of its edges are the
-    figure's).
+    figure's); each must be an edge of the triangulation.
   weights: "mvc" (mean value coordinates, default), "uniform" or "floater",
     as for morph().
 
 Raises:
   InvalidArgumentError: an unknown weights name, a triangulation that is not
     such a dict or not one the morph can use (malformed, a triangle not
-    counter-clockwise, an enclosure that is not fixed and convex), or an
-    array of the wrong shape or type.
+    counter-clockwise, an enclosure that is not fixed and convex, a figure
+    edge that is not one of its edges), or an array of the wrong shape or
+    type.
   InvalidFigureError: the first n source nodes joined by edges are not a
     valid stick figure.
 
@@ -393,8 +399,9 @@ Args:
     enclosure, then Steiner vertices, as in the triangulation dict) instead
     of the figure's n vertices.
   verify: check the result exactly (default True), as morph() checks every
-    frame: every triangle counter-clockwise and the figure a stick figure
-    compatible with the source; a result that fails is solved directly at t
+    frame by default: every triangle counter-clockwise inside the convex
+    enclosure, which proves the figure a stick figure compatible with the
+    source (the certificate, O(T)); a result that fails is solved directly at t
     and then refined in long double before it is refused. verify=False
     skips the check and the repair, for a scrubbing preview that must be
     fast; the result is then valid in exact arithmetic (Tutte's theorem)
@@ -483,8 +490,9 @@ Args:
     the enclosure moves with the figure's similarity) instead of the
     figure's n vertices.
   verify: check the frame exactly (default True): the moved enclosure
-    convex, every triangle counter-clockwise, the figure a stick figure
-    compatible with the source; a frame that fails falls back as in morph().
+    convex and every triangle counter-clockwise, which proves the figure a
+    stick figure compatible with the source (the certificate); a frame that
+    fails falls back as in morph().
 
 Returns:
   #n by 2 float64 ndarray (with all_nodes=True, (n+k+s) by 2). At t = 0 and
@@ -517,10 +525,12 @@ Raises:
          const py::object& frames, const py::object& steiner, const py::object& weights,
          const py::object& enclosure_sides, const py::object& method, const py::object& verify,
          const py::object& target_edges, const py::object& rotation, const py::object& turns,
-         const py::object& easing, const py::object& correspond, const py::object& pins) {
+         const py::object& easing, const py::object& correspond, const py::object& pins,
+         const py::object& frame_check) {
         // Arguments first, figures second, as the CLI does.
-        const sm::MorphStickFiguresOptions options = to_morph_options(
-            frames, steiner, weights, enclosure_sides, method, verify, rotation, turns, easing, correspond, pins);
+        const sm::MorphStickFiguresOptions options =
+            to_morph_options(frames, steiner, weights, enclosure_sides, method, verify, rotation, turns, easing,
+                             correspond, pins, frame_check);
         const auto figures =
             make_figure_pair(source_xy, target_xy, edges, target_edges, "source_xy", "target_xy");
         sm::MorphStickFiguresResult result;
@@ -536,7 +546,7 @@ Raises:
       py::arg("steiner") = py::none(), py::arg("weights") = py::none(), py::arg("enclosure_sides") = py::none(),
       py::arg("method") = "rigid", py::arg("verify") = py::none(), py::arg("target_edges") = py::none(),
       py::arg("rotation") = py::none(), py::arg("turns") = py::none(), py::arg("easing") = py::none(),
-      py::arg("correspond") = py::none(), py::arg("pins") = py::none(),
+      py::arg("correspond") = py::none(), py::arg("pins") = py::none(), py::arg("frame_check") = py::none(),
       with_limits(R"doc(Morphs one stick figure into a compatible one (paper, Algorithm 3).
 
 The rigid method (default) morphs as rigidly as validity allows: the
@@ -575,6 +585,11 @@ Args:
     Barycentric only.
   method: "rigid" (default), "barycentric" or "linear".
   verify: check every frame exactly (default True). Not for linear.
+  frame_check: how, "certificate" (default: every triangle of the
+    triangulation counter-clockwise inside the convex enclosure, which
+    proves the frame an embedding with the source's topology, in O(T)) or
+    "full" (also rebuild each frame's figure and compare its cyclic
+    sequences with the source's). Not for linear, nor with verify=False.
   rotation: "short" (default), "ccw" or "cw": which way the figure turns as
     a whole. Rigid only.
   turns: extra whole turns, counter-clockwise positive, -{max_turns} to

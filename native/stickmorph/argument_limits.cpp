@@ -22,6 +22,7 @@ const std::vector<OptionName>& option_names() {
       // Figures drawn separately (issue 13).
       {Option::Correspond, "--correspond", "correspond"},
       {Option::Pins, "--pin", "pins"},
+      {Option::FrameCheck, "--frame-check", "frame_check"},
   };
   return table;
 }

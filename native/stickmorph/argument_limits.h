@@ -54,6 +54,7 @@ enum class Option {
   Easing,
   Correspond,
   Pins,
+  FrameCheck,
 };
 
 /// Which interface's names messages use: the CLI's "--enclosure-sides" or

@@ -11,6 +11,7 @@
 
 #include "stickmorph/errors.h"
 #include "stickmorph/exact_predicates.h"
+#include "stickmorph/frame_certificate.h"
 #include "stickmorph/frame_verification.h"
 #include "stickmorph/internal/barycentric_weights.h"
 #include "stickmorph/internal/geometry.h"
@@ -47,34 +48,18 @@ double smoothstep01(double x) {
 }
 
 // The defect of a frame in output space, or empty. The enclosure is no
-// longer fixed (the similarity moved it), so its being a simple polygon is
-// checked here: every corner a strict left turn and the sides' directions
-// winding once (counted exactly from comparisons of coordinates: a side
-// points "up" when its end is above its start, or level and to the right;
-// a locally convex polygon turns once iff its sides go from down to up
-// exactly once). With a simple boundary traversed counter-clockwise and
-// every triangle positive, the triangulated disk is embedded (the winding
-// argument of morph_topology.h's build_topology).
+// longer fixed (the similarity moved it), but the certificate
+// (frame_certificate.h) checks it in every frame: a strictly convex polygon
+// winding once, every triangle counter-clockwise, which proves the frame an
+// embedding with the source's topology. FrameCheck::Full adds the
+// independent rebuild of the figure (verify_frame).
 std::string output_defect(const FigureTriangulation& tri, const StickFigure& source,
                           const Decomposition& source_decomposition, const std::vector<Vec2>& p, int frame,
-                          double time) {
-  const int n = tri.figure_vertices, k = tri.enclosure_vertices;
-  auto up = [&](int i) {
-    const Vec2& a = p[n + i];
-    const Vec2& b = p[n + (i + 1) % k];
-    return b[1] > a[1] || (b[1] == a[1] && b[0] > a[0]);
-  };
-  int rises = 0;
-  for (int i = 0; i < k; ++i) {
-    if (orientation(p[n + i], p[n + (i + 1) % k], p[n + (i + 2) % k]) <= 0)
-      return frame_label(frame, time) + ": the enclosure is not convex at " + node_text(tri, n + (i + 1) % k);
-    if (!up(i) && up((i + 1) % k)) ++rises;
-  }
-  if (rises != 1)
-    return frame_label(frame, time) + ": the enclosure winds " + std::to_string(rises) + " times";
-  const int t = first_non_positive(tri, p);
-  if (t >= 0) return frame_label(frame, time) + ": " + triangle_text(tri, t) + " is not counter-clockwise";
-  const std::vector<Vec2> figure(p.begin(), p.begin() + n);
+                          double time, FrameCheck check) {
+  const std::string defect = certificate_defect(tri, p);
+  if (!defect.empty()) return frame_label(frame, time) + ": " + defect;
+  if (check == FrameCheck::Certificate) return {};
+  const std::vector<Vec2> figure(p.begin(), p.begin() + tri.figure_vertices);
   try {
     verify_frame(source, source_decomposition, figure, frame, time);
   } catch (const VerificationError& error) {
@@ -460,7 +445,11 @@ GuidedMorph::GuidedMorph(const FigureTriangulation& normalised, const StickFigur
   s.output = tri;
   s.output.target = similarity.apply(1.0, tri.target);
   for (int v = 0; v < tri.figure_vertices; ++v) s.output.target[v] = target_vertices[v];
-  const std::string defect = output_defect(s.output, s.source, s.decomposition, s.output.target, -1, 1.0);
+  require_figure_edges(s.output, s.source);
+  // The last frame is checked in full once, here: it is the real target,
+  // not a solve.
+  const std::string defect =
+      output_defect(s.output, s.source, s.decomposition, s.output.target, -1, 1.0, FrameCheck::Full);
   if (!defect.empty())
     throw VerificationError("the rigid morph's triangulation moved to the target: " + defect);
 }
@@ -474,13 +463,13 @@ const SimilarityMotion& GuidedMorph::similarity() const { return state_->similar
 const GuidedMorphStats& GuidedMorph::stats() const { return state_->stats; }
 
 
-GuidedFrame GuidedMorph::frame(double t, int frame, bool verify, const std::string& context) {
+GuidedFrame GuidedMorph::frame(double t, int frame, bool verify, const std::string& context, FrameCheck check) {
   if (!(t >= 0 && t <= 1)) throw InvalidArgumentError("the morph time must be in [0, 1]");
   State& s = *state_;
   GuidedFrame result;
   auto defect_of = [&](const std::vector<Vec2>& p) {
     const auto start = Clock::now();
-    std::string defect = output_defect(s.output, s.source, s.decomposition, p, frame, t);
+    std::string defect = output_defect(s.output, s.source, s.decomposition, p, frame, t, check);
     result.verify_ms += ms_since(start);
     s.stats.verify_ms += ms_since(start);
     return defect;
@@ -516,7 +505,8 @@ GuidedFrame GuidedMorph::frame(double t, int frame, bool verify, const std::stri
   // Step 5's fallback: [8] at u, with its own refinement, then moved.
   start = Clock::now();
   if (!s.fallback) s.fallback.emplace(s.tri, s.weight_kind);
-  CheckedFrame plain = checked_morph_frame(*s.fallback, s.tri, s.source, s.decomposition, u, frame, true, context);
+  CheckedFrame plain =
+      checked_morph_frame(*s.fallback, s.tri, s.source, s.decomposition, u, frame, true, context, check);
   s.stats.solve_ms += ms_since(start) - plain.verify_ms;
   s.stats.verify_ms += plain.verify_ms;
   result.verify_ms += plain.verify_ms;
@@ -529,13 +519,13 @@ GuidedFrame GuidedMorph::frame(double t, int frame, bool verify, const std::stri
   return result;
 }
 
-MorphResult guided_morph(GuidedMorph& morph, int frames, bool verify, GuidedMorphStats* stats) {
+MorphResult guided_morph(GuidedMorph& morph, int frames, bool verify, GuidedMorphStats* stats, FrameCheck check) {
   MorphResult result;
   result.times.resize(frames);
   for (int f = 0; f < frames; ++f) result.times[f] = double(f) / double(frames - 1);
   int exact = 0, blended = 0, barycentric = 0, refined = 0;
   for (int f = 0; f < frames; ++f) {
-    GuidedFrame frame = morph.frame(result.times[f], f, verify, "morph: ");
+    GuidedFrame frame = morph.frame(result.times[f], f, verify, "morph: ", check);
     if (f > 0 && f < frames - 1) {
       if (frame.fit == GuideFit::Exact) ++exact;
       if (frame.fit == GuideFit::Blended) ++blended;

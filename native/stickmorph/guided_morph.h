@@ -31,7 +31,8 @@
 //      output space: every triangle counter-clockwise with the enclosure a
 //      convex polygon (a similarity image, no longer fixed: a triangulated
 //      disk whose triangles are all positive and whose boundary is simple is
-//      embedded), then verify_frame on the figure. A frame that fails (only
+//      embedded, the certificate of frame_certificate.h), and with
+//      FrameCheck::Full also verify_frame on the figure. A frame that fails (only
 //      rounding can make it fail) falls back to step 4, then to the plain
 //      barycentric frame of [8] at u with its refinement (checked_morph_frame),
 //      moved by the similarity and checked again; only then is it refused.
@@ -106,7 +107,8 @@ class GuidedMorph {
   /// exactly as described above.
   /// @throws InvalidArgumentError for t outside [0, 1]; VerificationError
   ///         "<context><frame label>: <defect>" when no candidate passes.
-  GuidedFrame frame(double t, int frame, bool verify, const std::string& context);
+  GuidedFrame frame(double t, int frame, bool verify, const std::string& context,
+                    FrameCheck check = FrameCheck::Certificate);
 
   /// The triangulation in output space: the source's as given, the
   /// target's positions those of the normalised target moved by the
@@ -127,6 +129,7 @@ class GuidedMorph {
 /// A rigid morph of N frames at animation times f / (N - 1), counted in
 /// `stats`. frames[f] holds all node positions in output space.
 /// @throws as GuidedMorph.
-MorphResult guided_morph(GuidedMorph& morph, int frames, bool verify, GuidedMorphStats* stats = nullptr);
+MorphResult guided_morph(GuidedMorph& morph, int frames, bool verify, GuidedMorphStats* stats = nullptr,
+                         FrameCheck check = FrameCheck::Certificate);
 
 }  // namespace stickmorph

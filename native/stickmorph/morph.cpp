@@ -41,14 +41,17 @@ void require_source_matches(const FigureTriangulation& tri, const StickFigure& s
                                  " of the figure is not at its position in the triangulation's source");
 }
 
-// The frame's defect, or empty: (1) every triangle counter-clockwise,
-// (2) the figure a stick figure compatible with the source.
+// The frame's defect, or empty: the certificate (frame_certificate.h: the
+// enclosure convex and every triangle counter-clockwise, which proves the
+// frame an embedding with the source's topology), then with FrameCheck::Full
+// the independent check, verify_frame: the figure rebuilt and compared with
+// the source.
 std::string frame_defect(const FigureTriangulation& tri, const StickFigure& source,
                          const Decomposition& source_decomposition, const std::vector<Vec2>& positions,
-                         int frame, double time) {
-  const int t = first_non_positive(tri, positions);
-  if (t >= 0)
-    return frame_label(frame, time) + ": " + triangle_text(tri, t) + " is not counter-clockwise";
+                         int frame, double time, FrameCheck check) {
+  const std::string defect = certificate_defect(tri, positions);
+  if (!defect.empty()) return frame_label(frame, time) + ": " + defect;
+  if (check == FrameCheck::Certificate) return {};
   const std::vector<Vec2> figure(positions.begin(), positions.begin() + tri.figure_vertices);
   try {
     verify_frame(source, source_decomposition, figure, frame, time);
@@ -102,7 +105,8 @@ std::vector<Vec2> solve_morph_frame(const FigureTriangulation& triangulation, do
 
 CheckedFrame checked_morph_frame(MorphSolver& solver, const FigureTriangulation& triangulation,
                                  const StickFigure& source, const Decomposition& source_decomposition,
-                                 double t, int frame, bool verify, const std::string& context) {
+                                 double t, int frame, bool verify, const std::string& context,
+                                 FrameCheck check) {
   // Refinement rounds for a frame that fails: each round gains roughly the
   // extra precision of long double until the result is correctly rounded;
   // beyond three it no longer changes.
@@ -134,7 +138,8 @@ CheckedFrame checked_morph_frame(MorphSolver& solver, const FigureTriangulation&
   if (!verify) return result;
   auto defect_now = [&] {
     const auto start = Clock::now();
-    std::string defect = frame_defect(triangulation, source, source_decomposition, result.positions, frame, t);
+    std::string defect =
+        frame_defect(triangulation, source, source_decomposition, result.positions, frame, t, check);
     result.verify_ms += ms_since(start);
     return defect;
   };
@@ -166,6 +171,7 @@ MorphResult morph_triangulation(const FigureTriangulation& triangulation, const 
   auto start = Clock::now();
   MorphSolver solver(triangulation, options.weights);
   require_source_matches(triangulation, source);
+  require_figure_edges(triangulation, source);
   const double setup_ms = ms_since(start);
 
   const Decomposition source_decomposition = decompose(source);
@@ -173,7 +179,7 @@ MorphResult morph_triangulation(const FigureTriangulation& triangulation, const 
   for (int f = 0; f < options.frames; ++f) {
     CheckedFrame frame =
         checked_morph_frame(solver, triangulation, source, source_decomposition, result.times[f], f, options.verify,
-                            "morph: ");
+                            "morph: ", options.frame_check);
     result.stats.verify_ms += frame.verify_ms;
     if (frame.refined) ++result.stats.refined_frames;
     result.frames.push_back(std::move(frame.positions));

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "stickmorph/figure_triangulation.h"
+#include "stickmorph/frame_certificate.h"
 #include "stickmorph/stick_figure.h"
 
 namespace stickmorph {
@@ -63,10 +64,13 @@ constexpr int kMaxMorphFrames = 100000;
 struct MorphOptions {
   int frames = 50;                          ///< N >= 2: t_f = f / (N - 1), f = 0..N-1
   WeightKind weights = WeightKind::MeanValue;
-  /// Verify every frame exactly (all triangles counter-clockwise, and the
-  /// figure a stick figure compatible with the source) and refine or refuse
-  /// frames that fail.
+  /// Verify every frame exactly and refine or refuse frames that fail.
   bool verify = true;
+  /// How (frame_certificate.h): the certificate, all triangles
+  /// counter-clockwise inside the convex enclosure, which proves the frame
+  /// valid in O(T); or Full, the certificate and verify_frame's independent
+  /// rebuild of the figure (a stick figure compatible with the source).
+  FrameCheck frame_check = FrameCheck::Certificate;
 };
 
 /// What the morph measured.
@@ -134,9 +138,10 @@ struct CheckedFrame {
 /// for the morph's frame loop and for scrubbing (stickmorph.MorphSolver):
 /// at t = 0 and 1 the inputs themselves (the contract promises them bit for
 /// bit), otherwise `solver`'s warm-started solve. With `verify`, the frame's
-/// exact check: (1) every triangle counter-clockwise, which with the fixed
-/// convex enclosure makes the frame a triangulation with the source's
-/// connectivity, then (2) verify_frame, the figure a stick figure compatible
+/// exact check `check`: the certificate (frame_certificate.h: every triangle
+/// counter-clockwise, which with the convex enclosure proves the frame a
+/// triangulation with the source's connectivity), and with FrameCheck::Full
+/// also verify_frame, the figure rebuilt and found a stick figure compatible
 /// with the source. A frame that fails is solved directly at t, then refined
 /// in long double (rounding can flip a nearly flat triangle that is positive
 /// in exact arithmetic, where the theorem of [8] holds), and only then
@@ -145,7 +150,8 @@ struct CheckedFrame {
 /// @throws VerificationError "<context><frame label>: <defect>".
 CheckedFrame checked_morph_frame(MorphSolver& solver, const FigureTriangulation& triangulation,
                                  const StickFigure& source, const Decomposition& source_decomposition,
-                                 double t, int frame, bool verify, const std::string& context);
+                                 double t, int frame, bool verify, const std::string& context,
+                                 FrameCheck check = FrameCheck::Certificate);
 
 /// The solve of [8] alone at one time t in [0, 1]: all node positions of
 /// (I - W_interior(t)) x = W_boundary(t) x_boundary, without substituting

@@ -164,7 +164,8 @@ void morph_rigidly(const StickFigure& source, const StickFigure& target, const M
   const auto start = std::chrono::steady_clock::now();
   MorphResult morphed;
   try {
-    morphed = guided_morph(morph, result.morph_options.frames, result.morph_options.verify, &guided);
+    morphed = guided_morph(morph, result.morph_options.frames, result.morph_options.verify, &guided,
+                           result.morph_options.frame_check);
   } catch (const InvalidArgumentError& error) {
     throw InternalError(std::string("morph_stick_figures: the engine refused its own intermediate result: ") +
                         error.what());
@@ -220,6 +221,7 @@ void check_morph_options(const MorphStickFiguresOptions& options) {
     // The order of the CLI's historical checks, so that the first refused
     // option named is the same as before.
     refuse_given({{Option::Verify, options.verify.has_value()},
+                  {Option::FrameCheck, options.frame_check.has_value()},
                   {Option::Weights, options.weights.has_value()},
                   {Option::Steiner, options.steiner.has_value()},
                   {Option::EnclosureSides, options.enclosure_sides.has_value()}},
@@ -233,6 +235,10 @@ void check_morph_options(const MorphStickFiguresOptions& options) {
                   {Option::Turns, options.turns.has_value()},
                   {Option::Easing, options.easing.has_value()}},
                  "only the rigid method factors out a rotation and follows a guide");
+  if (options.frame_check && options.verify == false)
+    throw InvalidArgumentError(describe_option(Option::FrameCheck, options.spelling) + " has no effect with " +
+                               (options.spelling == OptionSpelling::CommandLine ? "--no-verify" : "verify=False") +
+                               " (no frame is checked)");
   if (options.enclosure_sides) check_enclosure_sides(*options.enclosure_sides, options.spelling);
   if (options.turns) check_turns(*options.turns, options.spelling);
   if (!options.pins.empty() && options.correspond != CorrespondenceMode::Auto)
@@ -273,6 +279,7 @@ MorphStickFiguresResult morph_corresponding(const StickFigure& source, const Sti
   result.morph_options.frames = int(options.frames);
   result.morph_options.weights = options.weights.value_or(WeightKind::MeanValue);
   result.morph_options.verify = options.verify.value_or(true);
+  result.morph_options.frame_check = options.frame_check.value_or(FrameCheck::Certificate);
   MorphStickFiguresStats& stats = result.stats;
   stats.triangulation.parts = figure_parts(source).count();
 

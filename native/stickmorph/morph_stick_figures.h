@@ -70,6 +70,9 @@ struct MorphStickFiguresOptions {
   std::optional<WeightKind> weights;           ///< default WeightKind::MeanValue
   std::optional<long long> enclosure_sides;    ///< default kDefaultEnclosureSides
   std::optional<bool> verify;                  ///< default true: every frame checked exactly
+  /// How each frame is checked (frame_certificate.h); default
+  /// FrameCheck::Certificate. Refused with verify false and with Linear.
+  std::optional<FrameCheck> frame_check;
   // The rigid method's own; asking for them with another method is refused.
   std::optional<RotationDirection> rotation;   ///< default RotationDirection::Short
   std::optional<long long> turns;              ///< extra whole turns, ccw positive; default 0

@@ -279,7 +279,7 @@ TEST_CASE("the option-name table names every option once") {
     CHECK(seen.insert(int(row.option)).second);
     CHECK(keywords.insert(row.keyword).second);
   }
-  CHECK(seen.size() == std::size_t(Option::Pins) + 1);
+  CHECK(seen.size() == std::size_t(Option::FrameCheck) + 1);
   CHECK(describe_option(Option::Correspond, OptionSpelling::CommandLine) == "option --correspond");
   CHECK(describe_option(Option::Pins, OptionSpelling::CommandLine) == "option --pin");
   CHECK(describe_option(Option::Pins, OptionSpelling::Keyword) == "pins");

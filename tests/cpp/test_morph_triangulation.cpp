@@ -493,10 +493,11 @@ TEST_CASE("weights: known values", "[barycentric_weights]") {
   for (int i = 1; i <= 6; ++i) CHECK(F.coeff(0, i) == Approx(1.0 / 6).epsilon(1e-12));
 }
 
-TEST_CASE("a figure edge off the triangulation is caught at the frame that breaks", "[morph_triangulation]") {
+TEST_CASE("a figure edge off the triangulation is refused before any frame", "[morph_triangulation]") {
   // Square enclosure, figure path 0-1-2. Node 2 drops onto the segment 0-1
   // in the target; the triangulation stays valid because 0-1 is not one of
-  // its edges, so only the figure check can notice.
+  // its edges. The frame certificate (frame_certificate.h) needs every
+  // figure edge to be a triangulation edge, so the setup refuses it.
   FigureTriangulation tri;
   tri.figure_vertices = 3;
   tri.enclosure_vertices = 4;
@@ -507,16 +508,21 @@ TEST_CASE("a figure edge off the triangulation is caught at the frame that break
   const StickFigure source = figure({tri.source.begin(), tri.source.begin() + 3}, {{0, 1}, {1, 2}});
   MorphOptions options;
   options.frames = 5;
-  CHECK_THROWS_AS(morph_triangulation(tri, source, options), VerificationError);
+  CHECK_THROWS_AS(morph_triangulation(tri, source, options), InvalidArgumentError);
   CHECK_THROWS_WITH(morph_triangulation(tri, source, options),
-                    Contains("frame 4 (t = 1)") && Contains("overlap") && Contains("0 (0-1)"));
+                    Contains("figure edge 0 (0-1) is not an edge of the triangulation"));
+  options.frame_check = FrameCheck::Full;
+  CHECK_THROWS_AS(morph_triangulation(tri, source, options), InvalidArgumentError);
   options.verify = false;
-  const MorphResult r = morph_triangulation(tri, source, options);
-  CHECK_FALSE(is_frame_valid(source, {r.frames.back().begin(), r.frames.back().begin() + 3}));
-  // A target where node 2 stays above the segment morphs fine.
+  CHECK_THROWS_AS(morph_triangulation(tri, source, options), InvalidArgumentError);
+  // What the certificate could not have seen: the last frame's figure
+  // overlaps itself, though every triangle is positive.
+  CHECK_FALSE(is_frame_valid(source, {tri.target.begin(), tri.target.begin() + 3}));
+  // With 0-1 an edge of the figure's own triangulation it morphs.
   tri.target[2] = {0.5, 0.5};
+  const StickFigure path = figure({tri.source.begin(), tri.source.begin() + 3}, {{1, 2}, {2, 0}});
   options.verify = true;
-  CHECK_NOTHROW(morph_triangulation(tri, source, options));
+  CHECK_NOTHROW(morph_triangulation(tri, path, options));
 }
 
 TEST_CASE("malformed morph inputs are refused with a reason", "[morph_triangulation]") {

@@ -294,6 +294,7 @@ def test_morph_frame_counts(cli, data_dir, tmp_path, frames, name, method):
 @pytest.mark.parametrize("options", [["--steiner", "sg2001"], ["--steiner", "aronov"],
                                      ["--weights", "uniform"], ["--weights", "floater"],
                                      ["--enclosure-sides", "4"], ["--no-verify"],
+                                     ["--frame-check", "full"], ["--frame-check", "certificate"],
                                      ["--svg-triangulation", "--svg", "{tmp}/film.svg"],
                                      ["--svg-compare-linear", "--svg", "{tmp}/film.svg"]])
 @pytest.mark.parametrize("method", ["rigid", "barycentric"])
@@ -558,3 +559,29 @@ def test_failure_keeps_an_existing_output(cli, data_dir, tmp_path):
     result = run(cli, "morph", source, target, "-o", out)
     assert result.returncode == 2 and out.read_text() == "previous"
     assert not (tmp_path / "OUT.json.partial").exists()
+
+
+@pytest.mark.parametrize("method", ["rigid", "barycentric"])
+def test_morph_frame_check_full_gives_the_same_frames(cli, data_dir, tmp_path, method):
+    # The certificate (default) and the full check accept the same frames:
+    # the documents agree except for the timings.
+    source, target = pair_paths(data_dir, "pairs/compatible", "square_with_spikes")
+    documents = []
+    for check in ("certificate", "full"):
+        out = tmp_path / f"{check}.json"
+        run_ok(cli, "morph", source, target, "-o", out, "--frames", 9, "--method", method, "--frame-check", check)
+        documents.append(json.loads(out.read_text()))
+    assert documents[0]["frames"] == documents[1]["frames"]
+
+
+@pytest.mark.parametrize("options, message", [
+    (["--frame-check", "full", "--no-verify"],
+     "option --frame-check has no effect with --no-verify (no frame is checked)"),
+    (["--frame-check", "full", "--method", "linear"],
+     "option --frame-check has no effect with --method linear (the straight-line morph uses no triangulation)"),
+    (["--frame-check", "quick"], "unknown frame check 'quick' (choose certificate or full)"),
+])
+def test_morph_frame_check_refusals(cli, data_dir, tmp_path, options, message):
+    source, target = pair_paths(data_dir, "pairs/compatible", "polyline")
+    out = tmp_path / "morph.json"
+    assert assert_error(run(cli, "morph", source, target, "-o", out, *options), out) == message

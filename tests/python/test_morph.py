@@ -1213,3 +1213,26 @@ def test_argument_checks_come_before_figure_checks():
     # As in the CLI: a bad option is reported even when the figures are bad too.
     with pytest.raises(stickmorph.InvalidArgumentError):
         stickmorph.morph(CROSSING, CROSSING, CROSSING_EDGES, weights="x")
+
+
+@pytest.mark.parametrize("method", ["rigid", "barycentric"])
+def test_frame_check_full_agrees_with_the_certificate(method):
+    # The certificate (default) proves each frame valid; the full check
+    # rebuilds each frame's figure as well. Both accept the same frames.
+    certified = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=11, method=method)
+    full = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=11, method=method, frame_check="full")
+    np.testing.assert_array_equal(certified["frames"], full["frames"])
+    explicit = stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=11, method=method, frame_check="certificate")
+    np.testing.assert_array_equal(certified["frames"], explicit["frames"])
+
+
+@pytest.mark.parametrize("keywords, message", [
+    ({"frame_check": "full", "verify": False}, "frame_check has no effect with verify=False (no frame is checked)"),
+    ({"frame_check": "full", "method": "linear"},
+     "frame_check has no effect with method='linear' (the straight-line morph uses no triangulation)"),
+    ({"frame_check": "quick"}, "unknown frame check 'quick' (choose certificate or full)"),
+])
+def test_frame_check_refusals(keywords, message):
+    with pytest.raises(stickmorph.InvalidArgumentError) as error:
+        stickmorph.morph(A_SOURCE, A_TARGET, A_EDGES, frames=5, **keywords)
+    assert str(error.value) == message

@@ -112,19 +112,18 @@ def test_verify_false_skips_only_the_check(case):
 
 # A path 0-1-2-3 whose last vertex swings from (0, 4) to (5, 2). Edge 3-0 is
 # not in the triangulation: it closes a square in the source but crosses
-# edge 1-2 in the target, so only the exact frame check can catch it.
+# edge 1-2 in the target. The frame certificate needs every figure edge to
+# be a triangulation edge, so the solver refuses it at once.
 PATH_SOURCE = [[0, 0], [4, 0], [4, 4], [0, 4]]
 PATH_TARGET = [[0, 0], [4, 0], [4, 4], [5, 2]]
 PATH_EDGES = [[0, 1], [1, 2], [2, 3]]
 
 
-def test_verify_refuses_an_invalid_frame_naming_t():
+def test_a_figure_edge_off_the_triangulation_is_refused():
     tri = stickmorph.triangulate_figures(PATH_SOURCE, PATH_TARGET, PATH_EDGES)
-    solver = stickmorph.MorphSolver(tri, PATH_EDGES + [[3, 0]])
-    assert np.array_equal(solver.solve(0), np.asarray(PATH_SOURCE, dtype=float))
-    with pytest.raises(stickmorph.VerificationError, match=r"t = 1\b"):
-        solver.solve(1)
-    assert np.array_equal(solver.solve(1, verify=False), np.asarray(PATH_TARGET, dtype=float))
+    with pytest.raises(stickmorph.InvalidArgumentError,
+                       match=r"figure edge 3 \(3-0\) is not an edge of the triangulation"):
+        stickmorph.MorphSolver(tri, PATH_EDGES + [[3, 0]])
     # With the figure's own edges the same triangulation morphs validly.
     valid = stickmorph.MorphSolver(tri, PATH_EDGES)
     for t in np.linspace(0, 1, 9):
