@@ -55,9 +55,34 @@ double min_angle(const PolygonPair& pair, const CompatibleTriangulation& tri) {
   return m;
 }
 
+namespace {
+CompatibleTriangulation compatible_triangulation_once(const PolygonPair& pair,
+                                                      const CompatibleTriangulationOptions& options,
+                                                      CompatibleTriangulationStats* stats, int& routed_cuts);
+}  // namespace
+
 CompatibleTriangulation compatible_triangulation(const PolygonPair& pair,
                                                  const CompatibleTriangulationOptions& options,
                                                  CompatibleTriangulationStats* stats) {
+  // Routed cuts add bends as Steiner vertices, and the whole is verified
+  // only at the end: if a result with such cuts fails, it is built again
+  // without them.
+  int routed_cuts = 0;
+  try {
+    return compatible_triangulation_once(pair, options, stats, routed_cuts);
+  } catch (const VerificationError&) {
+    if (routed_cuts == 0) throw;
+  }
+  CompatibleTriangulationOptions plain = options;
+  plain.routed_cuts = false;
+  return compatible_triangulation_once(pair, plain, stats, routed_cuts);
+}
+
+namespace {
+
+CompatibleTriangulation compatible_triangulation_once(const PolygonPair& pair,
+                                                      const CompatibleTriangulationOptions& options,
+                                                      CompatibleTriangulationStats* stats, int& routed_cuts) {
   const int n = int(pair.corners.size());
   const std::vector<std::array<int, 3>> source_base = internal::triangulate_checked(pair.source(), options.label, false);
   const std::vector<std::array<int, 3>> target_base = internal::triangulate_checked(pair.target(), options.label, true);
@@ -65,7 +90,8 @@ CompatibleTriangulation compatible_triangulation(const PolygonPair& pair,
   CompatibleTriangulationStats local;
   internal::CompatibleMesh mesh =
       options.method == SteinerMethod::Improved
-          ? internal::piecewise_mesh(pair, source_base, target_base, options, local.spiderweb_steiner_vertices)
+          ? internal::piecewise_mesh(pair, source_base, target_base, options, local.spiderweb_steiner_vertices,
+                                     &routed_cuts)
           : internal::spiderweb_mesh(pair, source_base, target_base, options, local.spiderweb_steiner_vertices);
   local.min_angle_before_smoothing = internal::mesh_min_angle(mesh);
   internal::smooth(mesh, false, options.smoothing_rounds);
@@ -83,5 +109,7 @@ CompatibleTriangulation compatible_triangulation(const PolygonPair& pair,
   if (stats) *stats = local;
   return result;
 }
+
+}  // namespace
 
 }  // namespace stickmorph

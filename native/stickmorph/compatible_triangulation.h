@@ -71,6 +71,11 @@ struct CompatibleTriangulationOptions {
   int smoothing_rounds = 10;
   /// Name of the face in messages (e.g. "face 3").
   std::string label = "polygon";
+  /// Improved method: a pair whose spiderweb would be deep may be cut in
+  /// two along a path routed in both polygons (internal/routed_cut.h). If
+  /// the result with such cuts fails verification, it is built again
+  /// without them.
+  bool routed_cuts = true;
 };
 
 /// What the solver measured.

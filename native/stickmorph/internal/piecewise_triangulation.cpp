@@ -4,14 +4,114 @@
 #include <set>
 #include <utility>
 
+#include "stickmorph/internal/routed_cut.h"
 #include "stickmorph/internal/shared_diagonals.h"
 #include "stickmorph/internal/spiderweb_triangulation.h"
+#include "stickmorph/internal/steiner_reduction.h"
 
 namespace stickmorph::internal {
+namespace {
+
+// A pair is considered for a routed cut (routed_cut.h) when its spiderweb
+// would give the corners more than kDeepAverage Steiner vertices each on
+// average and it has at least kRoutedCutMinCorners corners; the cut is
+// taken when its pieces' spiderwebs together, with the cut's bends, come to
+// at most kCutGain of the whole pair's. Below that the spiderweb is cheap
+// and its Steiner count as good as the cut's.
+constexpr long kDeepAverage = 12;
+constexpr int kRoutedCutMinCorners = 64;
+constexpr double kCutGain = 0.8;
+
+// The pair cut along `cut` into `pieces`, each triangulated by
+// piecewise_mesh and glued: corners first, then the cut's bends, then the
+// pieces' Steiner vertices. Bends that are redundant in both polygons once
+// the pieces are glued are removed.
+CompatibleMesh routed_mesh(const PolygonPair& pair, const RoutedCut& cut, const std::array<RoutedPiece, 2>& pieces,
+                           const CompatibleTriangulationOptions& options, int& spiderweb_steiner,
+                           int* routed_cuts_taken) {
+  const int n = int(pair.corners.size());
+  const int m = int(cut.source_bends.size());
+  CompatibleMesh mesh;
+  mesh.corners = n;
+  for (int k = 0; k < n; ++k) {
+    mesh.source.push_back(pair.source_positions[pair.corners[k]]);
+    mesh.target.push_back(pair.target_positions[pair.corners[k]]);
+  }
+  mesh.source.insert(mesh.source.end(), cut.source_bends.begin(), cut.source_bends.end());
+  mesh.target.insert(mesh.target.end(), cut.target_bends.begin(), cut.target_bends.end());
+  spiderweb_steiner += m;
+  for (const RoutedPiece& routed : pieces) {
+    const int size = int(routed.nodes.size());
+    CompatibleMesh piece;
+    if (size == 3) {
+      piece.corners = 3;
+      piece.triangles.push_back({0, 1, 2});
+    } else {
+      piece = piecewise_mesh(routed.pair, routed.source_base, routed.target_base, options, spiderweb_steiner,
+                             routed_cuts_taken);
+    }
+    const int offset = int(mesh.source.size());
+    for (std::size_t v = piece.corners; v < piece.source.size(); ++v) {
+      mesh.source.push_back(piece.source[v]);
+      mesh.target.push_back(piece.target[v]);
+    }
+    for (std::size_t t = 0; t < piece.triangles.size(); ++t) {
+      if (!piece.alive.empty() && !piece.alive[t]) continue;
+      Triangle global;
+      for (int j = 0; j < 3; ++j) {
+        const int v = piece.triangles[t][j];
+        global[j] = v < size ? routed.nodes[std::size_t(v)] : offset + (v - size);
+      }
+      mesh.triangles.push_back(global);
+    }
+  }
+  mesh.alive.assign(mesh.triangles.size(), 1);
+  // Only the bends are new here: every other Steiner vertex already failed
+  // with the star it still has.
+  std::vector<char> candidates(mesh.source.size(), 0);
+  for (int i = 0; i < m; ++i) candidates[std::size_t(n + i)] = 1;
+  remove_redundant_steiner(pair, mesh, &candidates);
+  return mesh;
+}
+
+// The routed cut whose pieces need the smallest spiderwebs, if it gains
+// enough over the pair's own (see kCutGain).
+bool best_routed_cut(const PolygonPair& pair, const std::vector<std::array<int, 3>>& source_base,
+                     const std::vector<std::array<int, 3>>& target_base, RoutedCut& best_cut,
+                     std::array<RoutedPiece, 2>& best_pieces) {
+  const int n = int(pair.corners.size());
+  if (n < kRoutedCutMinCorners) return false;
+  const long total = spiderweb_depth_total(pair, source_base, target_base);
+  if (total <= kDeepAverage * n) return false;
+  double best = kCutGain * double(total);
+  bool found = false;
+  for (RoutedCut& cut : routed_cut_candidates(pair, source_base, target_base)) {
+    std::array<RoutedPiece, 2> pieces;
+    const std::array<std::vector<int>, 2> nodes = routed_pieces(n, cut);
+    try {
+      for (int p = 0; p < 2; ++p) pieces[p] = routed_piece(pair, cut, nodes[p]);
+    } catch (const InvalidFigureError&) {
+      continue;  // a rounded bend left a piece not weakly simple
+    }
+    double cost = double(cut.source_bends.size());
+    for (const RoutedPiece& piece : pieces)
+      if (piece.nodes.size() > 3) cost += double(spiderweb_depth_total(piece.pair, piece.source_base, piece.target_base));
+    if (cost < best) {
+      best = cost;
+      best_cut = std::move(cut);
+      best_pieces = std::move(pieces);
+      found = true;
+    }
+  }
+  return found;
+}
+
+}  // namespace
 
 CompatibleMesh piecewise_mesh(const PolygonPair& pair, const std::vector<std::array<int, 3>>& source_base,
                               const std::vector<std::array<int, 3>>& target_base,
-                              const CompatibleTriangulationOptions& options, int& spiderweb_steiner) {
+                              const CompatibleTriangulationOptions& options, int& spiderweb_steiner,
+                              int* routed_cuts_taken) {
   const int n = int(pair.corners.size());
   CompatibleMesh mesh;
   mesh.corners = n;
@@ -40,6 +140,24 @@ CompatibleMesh piecewise_mesh(const PolygonPair& pair, const std::vector<std::ar
   };
   const std::vector<std::array<int, 3>>* cut_base = nullptr;
   std::set<std::pair<int, int>> cuts = find_cuts(kMinNewAngle, cut_base);
+  if (cuts.empty()) {
+    // A deep pair: cut along a routed path if that shrinks the spiderweb.
+    RoutedCut cut;
+    std::array<RoutedPiece, 2> pieces;
+    if (options.routed_cuts && best_routed_cut(pair, source_base, target_base, cut, pieces)) {
+      const int counted = spiderweb_steiner;
+      const int taken = routed_cuts_taken ? *routed_cuts_taken : 0;
+      try {
+        CompatibleMesh routed = routed_mesh(pair, cut, pieces, options, spiderweb_steiner, routed_cuts_taken);
+        if (routed_cuts_taken) ++*routed_cuts_taken;
+        return routed;
+      } catch (const VerificationError&) {
+        // Fall back on the pair's own spiderweb.
+        spiderweb_steiner = counted;
+        if (routed_cuts_taken) *routed_cuts_taken = taken;
+      }
+    }
+  }
   if (cuts.empty()) {
     try {
       return spiderweb_mesh(pair, source_base, target_base, options, spiderweb_steiner);
@@ -80,7 +198,8 @@ CompatibleMesh piecewise_mesh(const PolygonPair& pair, const std::vector<std::ar
       piece.triangles.push_back({0, 1, 2});
     } else {
       piece = piecewise_mesh(sub, triangulate_checked(sub.source(), options.label, false),
-                            triangulate_checked(sub.target(), options.label, true), options, spiderweb_steiner);
+                            triangulate_checked(sub.target(), options.label, true), options, spiderweb_steiner,
+                            routed_cuts_taken);
     }
     // Corners of the piece are corners of the pair; its Steiner vertices are new.
     const int offset = int(mesh.source.size());

@@ -24,9 +24,14 @@ namespace stickmorph::internal {
 /// Where no diagonal is shared with angles of at least kMinNewAngle and the
 /// spiderweb finds no room (a needle thinner than the spacing of doubles),
 /// diagonals that the exact predicates accept however thin are used instead.
+/// A piece whose spiderweb would be deep is cut in two along a path routed
+/// in both polygons first (routed_cut.h, unless options.routed_cuts is
+/// false), if that shrinks the spiderwebs; `routed_cuts_taken` (optional)
+/// counts those cuts.
 /// @throws as spiderweb_mesh and triangulate_checked.
 CompatibleMesh piecewise_mesh(const PolygonPair& pair, const std::vector<std::array<int, 3>>& source_base,
                               const std::vector<std::array<int, 3>>& target_base,
-                              const CompatibleTriangulationOptions& options, int& spiderweb_steiner);
+                              const CompatibleTriangulationOptions& options, int& spiderweb_steiner,
+                              int* routed_cuts_taken = nullptr);
 
 }  // namespace stickmorph::internal

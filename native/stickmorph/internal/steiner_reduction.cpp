@@ -15,7 +15,7 @@ namespace stickmorph::internal {
 // by dynamic programming over the link polygon; positivity of every
 // triangle of a triangulated simple polygon without interior vertices makes
 // it an embedding, so validity is kept exactly.
-int remove_redundant_steiner(const PolygonPair& pair, CompatibleMesh& mesh) {
+int remove_redundant_steiner(const PolygonPair& pair, CompatibleMesh& mesh, const std::vector<char>* candidates) {
   const int nodes = int(mesh.source.size());
   std::vector<char> removed(nodes, 0);
   int count = 0;
@@ -40,6 +40,8 @@ int remove_redundant_steiner(const PolygonPair& pair, CompatibleMesh& mesh) {
   // neighbour's removal.
   constexpr int kShortLink = 32;
   std::vector<char> dirty(nodes, 1);
+  if (candidates)
+    for (int v = 0; v < nodes; ++v) dirty[v] = v < int(candidates->size()) && (*candidates)[v];
   for (bool changed = true, long_links = false; changed || !long_links;) {
     if (!changed) long_links = true;  // nothing short left: allow long links
     else if (long_links) long_links = false;  // a long one went: short ones again first
@@ -83,6 +85,10 @@ int remove_redundant_steiner(const PolygonPair& pair, CompatibleMesh& mesh) {
           if (!diagonal_ok(i, j)) continue;
           for (int k = i + 1; k < j; ++k) {
             if (best[i][k] < 0 || best[k][j] < 0) continue;
+            // The split cannot beat the best so far whatever its triangle
+            // (value <= min(best[i][k], best[k][j])): skip the triangle's
+            // exact tests and angles, the bulk of the cost.
+            if (std::min(best[i][k], best[k][j]) <= best[i][j]) continue;
             const double q = tri_quality(i, k, j);
             if (q < 0) continue;
             const double value = std::min({q, best[i][k], best[k][j]});

@@ -9,6 +9,8 @@
 // with no Steiner vertex at all.
 #pragma once
 
+#include <vector>
+
 #include "stickmorph/internal/compatible_mesh.h"
 
 namespace stickmorph::internal {
@@ -22,6 +24,11 @@ namespace stickmorph::internal {
 /// interior vertices makes it an embedding, so validity is kept exactly.
 /// Afterwards the surviving nodes are renumbered in order and only live
 /// triangles are kept. Returns the number of vertices removed.
-int remove_redundant_steiner(const PolygonPair& pair, CompatibleMesh& mesh);
+/// `candidates` (per node, optional): only these are tried at first; any
+/// other is tried once its star changes. A vertex that already failed with
+/// its present star needs no second try (see the .cpp: the outcome depends
+/// only on its link, and added edges can only forbid more).
+int remove_redundant_steiner(const PolygonPair& pair, CompatibleMesh& mesh,
+                             const std::vector<char>* candidates = nullptr);
 
 }  // namespace stickmorph::internal
