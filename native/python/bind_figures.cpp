@@ -56,7 +56,8 @@ Returns:
   None.
 
 Raises:
-  InvalidFigureError: the figure is not a connected straight-line plane graph;
+  InvalidFigureError: the figure is not a straight-line plane graph (it may have
+    several parts, FORMAT.md "Parts");
     its `defect`, `vertices` and `edges` say what and where.
   InvalidArgumentError: an array of the wrong shape or type.)doc");
 
