@@ -1,9 +1,14 @@
 // The morph's linear system at any time t; see morph_solver.h.
 #include "stickmorph/morph_solver.h"
 
+#include <Eigen/Dense>
 #include <Eigen/SparseLU>
 
 #include <algorithm>
+#include <type_traits>
+#include <cmath>
+#include <cstddef>
+#include <limits>
 
 #include "stickmorph/errors.h"
 #include "stickmorph/internal/barycentric_weights.h"
@@ -16,6 +21,95 @@ namespace {
 using namespace internal;
 using SparseMatrix = Eigen::SparseMatrix<double>;  // column-major, as SparseLU wants
 using LongVector = Eigen::Matrix<long double, Eigen::Dynamic, 2>;
+
+using LU = Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>>;
+
+/// The factors of a SparseLU as plain compressed columns, for the solves:
+/// Eigen's supernodal solve packs every supernode for a dense product,
+/// which for two right-hand sides costs more than the arithmetic (measured
+/// with perf on a 10^4-vertex triangulation: the packing alone was a sixth
+/// of a whole playback). Here each nonzero of L and U is one multiply-add
+/// per coordinate, both coordinates interleaved.
+class CompactLU {
+ public:
+  explicit CompactLU(const LU& lu) {
+    const int m = int(lu.rows());
+    pr_.assign(lu.rowsPermutation().indices().data(), lu.rowsPermutation().indices().data() + m);
+    pc_.assign(lu.colsPermutation().indices().data(), lu.colsPermutation().indices().data() + m);
+    const auto l = lu.matrixL();
+    const auto u = lu.matrixU();
+    using Supernodal = std::decay_t<decltype(l.m_mapL)>;
+    using Upper = std::decay_t<decltype(u.m_mapU)>;
+    lp_.assign(1, 0);
+    up_.assign(1, 0);
+    ud_.assign(std::size_t(m), 0.0);
+    for (int j = 0; j < m; ++j) {
+      // A supernode's columns hold U's dense block above the diagonal.
+      for (typename Supernodal::InnerIterator it(l.m_mapL, j); it; ++it) {
+        const int r = int(it.row());
+        if (r > j) {
+          li_.push_back(r);
+          lv_.push_back(it.value());
+        } else if (r == j) {
+          ud_[std::size_t(j)] = it.value();
+        } else {
+          ui_.push_back(r);
+          uv_.push_back(it.value());
+        }
+      }
+      for (typename Upper::InnerIterator it(u.m_mapU, j); it; ++it) {
+        ui_.push_back(int(it.index()));
+        uv_.push_back(it.value());
+      }
+      lp_.push_back(int(li_.size()));
+      up_.push_back(int(ui_.size()));
+    }
+  }
+
+  /// x = A^-1 b for the factorized A (P_r A P_c^T = L U).
+  Eigen::MatrixX2d solve(const Eigen::MatrixX2d& b) const {
+    const int m = int(pr_.size());
+    std::vector<double> y(2 * std::size_t(m));
+    for (int i = 0; i < m; ++i) {
+      y[2 * std::size_t(pr_[std::size_t(i)])] = b(i, 0);
+      y[2 * std::size_t(pr_[std::size_t(i)]) + 1] = b(i, 1);
+    }
+    double* v = y.data();
+    for (int j = 0; j < m; ++j) {
+      const double y0 = v[2 * j], y1 = v[2 * j + 1];
+      if (y0 == 0 && y1 == 0) continue;
+      for (int k = lp_[std::size_t(j)]; k < lp_[std::size_t(j) + 1]; ++k) {
+        const int r = li_[std::size_t(k)];
+        v[2 * r] -= lv_[std::size_t(k)] * y0;
+        v[2 * r + 1] -= lv_[std::size_t(k)] * y1;
+      }
+    }
+    for (int j = m - 1; j >= 0; --j) {
+      const double d = ud_[std::size_t(j)];
+      const double y0 = v[2 * j] /= d, y1 = v[2 * j + 1] /= d;
+      if (y0 == 0 && y1 == 0) continue;
+      for (int k = up_[std::size_t(j)]; k < up_[std::size_t(j) + 1]; ++k) {
+        const int r = ui_[std::size_t(k)];
+        v[2 * r] -= uv_[std::size_t(k)] * y0;
+        v[2 * r + 1] -= uv_[std::size_t(k)] * y1;
+      }
+    }
+    Eigen::MatrixX2d x(m, 2);
+    for (int i = 0; i < m; ++i) {
+      x(i, 0) = v[2 * std::size_t(pc_[std::size_t(i)])];
+      x(i, 1) = v[2 * std::size_t(pc_[std::size_t(i)]) + 1];
+    }
+    return x;
+  }
+
+  /// Nonzeros of L and U.
+  std::size_t nonzeros() const { return lv_.size() + uv_.size() + ud_.size(); }
+
+ private:
+  std::vector<int> pr_, pc_;          // P_r, P_c as index maps
+  std::vector<int> lp_, li_, up_, ui_;  // column starts and rows: strictly lower L, strictly upper U
+  std::vector<double> lv_, uv_, ud_;  // their values; U's diagonal (L's is one)
+};
 
 /// (I - W_interior(t)) x = W_boundary(t) x_boundary for every t, with the
 /// two endpoint matrices assembled on one sparsity pattern so that a frame
@@ -45,6 +139,24 @@ using LongVector = Eigen::Matrix<long double, Eigen::Dynamic, 2>;
 /// anchor. An iterative result is never trusted on its own: every frame is
 /// verified exactly, and one that fails is solved directly at its own time
 /// (the factorization that the long double refinement then reuses).
+///
+/// Issue 15 (a frame at most a tenth of a fresh LU): at 10^3 vertices one
+/// triangular solve pair already costs about a twentieth of a fresh LU
+/// (factorizing these planar systems is cheap), and the iteration above took
+/// 4-5 steps per frame of a 50-frame morph, with a factorization every few
+/// frames (benchmark_morph, before this: frame / fresh LU 0.3-1.05 over the
+/// families). Three additions, each measured there: (1) the Galerkin
+/// projection onto the space of earlier solutions, accepted without a step
+/// when its residual is a tenth of the tolerance, otherwise the warm start
+/// (with the quadratic and linear extrapolation through the latest three
+/// solutions and the nearest one: the least residual wins); (2) up to 16
+/// factorizations kept (within kAnchorBudgetBytes), the nearest in time
+/// iterated on, so that a random scrub stops refactorizing (at 10^3
+/// vertices, 240 random times: 211 factorizations with one anchor, 11 with
+/// sixteen); (3) the factors copied into plain compressed columns for the
+/// solves (CompactLU). A block Krylov space of A_a^-1 (A1 - A0) at each
+/// anchor (moment matching) was tried and dropped: accurate only within
+/// about 0.1 of the anchor, and its solves cost more than they saved.
 class MorphSystem {
  public:
   MorphSystem(const FigureTriangulation& tri, WeightKind kind) : tri_(tri), topo_(build_topology(tri)) {
@@ -93,42 +205,170 @@ class MorphSystem {
   /// irreducibly diagonally dominant M-matrix).
   bool factorize(double t) {
     t_ = t;
-    const double* v0 = a0_.valuePtr();
-    const double* v1 = a1_.valuePtr();
-    double* v = a_.valuePtr();
-    for (Eigen::Index e = 0; e < a_.nonZeros(); ++e) v[e] = (1 - t) * v0[e] + t * v1[e];
+    blend(t);
     lu_.factorize(a_);
-    return lu_.info() == Eigen::Success;
+    if (lu_.info() != Eigen::Success) return false;
+    // A new anchor while there is room, else the least recently used one
+    // is replaced.
+    std::size_t slot = anchors_.size();
+    if (anchors_.size() < kMaxAnchors &&
+        (anchors_.empty() || double(anchors_.size() + 1) * anchor_bytes() <= kAnchorBudgetBytes)) {
+      anchors_.push_back({t, 0, nullptr});
+    } else {
+      slot = 0;
+      for (std::size_t i = 1; i < anchors_.size(); ++i)
+        if (anchors_[i].used < anchors_[slot].used) slot = i;
+    }
+    Anchor& anchor = anchors_[slot];
+    anchor.t = t;
+    anchor.used = ++clock_;
+    anchor.factors = std::make_unique<CompactLU>(lu_);
+    current_ = slot;
+    return true;
   }
 
-  /// Solves the system blended to time t by iterative refinement on the last
-  /// factorization (the anchor), starting from `guess`: x += LU^-1 (b - A x),
-  /// both coordinates in one pass. Consecutive systems differ only by the
-  /// blend, so the anchor's inverse is close to this system's and each step
-  /// gains several digits. False if the residual does not drop below the
-  /// tolerance within kAnchorIterations steps: the anchor is too far, and the
-  /// caller factorizes at t instead.
-  bool iterate(double t, const Eigen::MatrixX2d& guess, Eigen::MatrixX2d& x) {
-    t_ = t;
+  /// Blends the matrix to time t (kept while t does not change).
+  void blend(double t) {
+    if (blended_ && t == blended_t_) return;
     const double* v0 = a0_.valuePtr();
     const double* v1 = a1_.valuePtr();
     double* v = a_.valuePtr();
     for (Eigen::Index e = 0; e < a_.nonZeros(); ++e) v[e] = (1 - t) * v0[e] + t * v1[e];
-    const Eigen::MatrixX2d b = rhs().cast<double>();
+    blended_ = true;
+    blended_t_ = t;
+  }
+
+  /// The residual norm of x for the system blended to time t (blend(t)
+  /// first), into `residual`.
+  double residual(const Eigen::MatrixX2d& b, const Eigen::MatrixX2d& x, Eigen::MatrixX2d& residual) const {
+    residual.noalias() = b - a_ * x;
+    return residual.allFinite() ? residual.norm() : std::numeric_limits<double>::infinity();
+  }
+
+  /// Makes the factorization nearest in time to t the anchor (the latest on
+  /// a tie). False if there is none.
+  bool choose_anchor(double t) {
+    if (anchors_.empty()) return false;
+    std::size_t best = current_;
+    for (std::size_t i = 0; i < anchors_.size(); ++i)
+      if (std::abs(anchors_[i].t - t) < std::abs(anchors_[best].t - t)) best = i;
+    current_ = best;
+    anchors_[best].used = ++clock_;
+    return true;
+  }
+
+  /// Sets up the right-hand side and the matrix of time t for residual(),
+  /// space_guess() and iterate().
+  void prepare(double t) {
+    t_ = t;
+    blend(t);
+    b_ = rhs().cast<double>();
     // Positions to about ten digits: far finer than any animation needs, and
     // every frame is verified exactly whatever the residual.
-    const double tolerance = 1e-10 * std::max(b.norm(), 1e-300);
-    x = guess;
-    for (int step = 0; step < kAnchorIterations; ++step) {
-      const Eigen::MatrixX2d residual = b - a_ * x;
-      if (!residual.allFinite()) return false;
-      if (residual.norm() <= tolerance) return true;
-      x += lu_.solve(residual);
-    }
-    return (b - a_ * x).norm() <= tolerance && x.allFinite();
+    tolerance_ = 1e-10 * std::max(b_.norm(), 1e-300);
+  }
+  /// The residual norm of x at the prepared time, into r.
+  double residual(const Eigen::MatrixX2d& x, Eigen::MatrixX2d& r) const { return residual(b_, x, r); }
+  /// A residual at which a warm start is taken as it is, without a step: a
+  /// tenth of the iteration's tolerance, so that a frame taken from the
+  /// space of earlier solutions is no less accurate than an iterated one
+  /// (whose last step usually lands well below the tolerance).
+  double accept_tolerance() const { return 0.1 * tolerance_; }
+
+  /// Iterative refinement on the last factorization (the anchor) from x
+  /// (with residual r of norm `norm` at the prepared time): x += LU^-1 (b -
+  /// A x), both coordinates in one pass, at least one step. Consecutive
+  /// systems differ only by the blend, so the anchor's inverse is close to
+  /// this system's and each step gains digits. False if the residual does
+  /// not drop below the tolerance within kAnchorIterations steps, or if at
+  /// the rate of the last step it would not: the anchor is too far, and the
+  /// caller factorizes at t instead. `steps` counts the triangular solves.
+  bool iterate(Eigen::MatrixX2d& x, Eigen::MatrixX2d& r, double norm, int& steps) const {
+    steps = 0;
+    if (!std::isfinite(norm)) return false;
+    do {
+      if (steps == kAnchorIterations) return false;
+      const double previous = norm;
+      x += lu().solve(r);
+      ++steps;
+      norm = residual(x, r);
+      if (!std::isfinite(norm)) return false;
+      const double rate = norm / previous;
+      if (norm > tolerance_ &&
+          (!(rate < 0.7) || std::log(tolerance_ / norm) / std::log(rate) > kAnchorIterations - steps))
+        return false;
+    } while (norm > tolerance_);
+    return true;
   }
   /// Steps after which an anchor counts as too far from the frame.
   static constexpr int kAnchorIterations = 8;
+
+  /// The space of earlier solutions (a reduced basis): x(t) is an analytic
+  /// function of one parameter, so the solutions at a few times span all
+  /// the others to many digits. Both coordinates of every solution that
+  /// needed a triangular solve join an orthonormal basis V (up to
+  /// kMaxSpace columns); the Galerkin projection V^T A(t) V y = V^T b(t)
+  /// then costs O(k^3 + m k) per frame, with V^T A0 V, V^T A1 V, V^T b0 and
+  /// V^T b1 kept (A(t) and b(t) blend linearly), far less than a triangular
+  /// solve. Its result is accepted only by its true residual.
+  bool space_guess(double t, Eigen::MatrixX2d& x) const {
+    if (space_.cols() == 0) return false;
+    const Eigen::MatrixXd g = (1 - t) * g0_ + t * g1_;
+    const Eigen::MatrixX2d c = (1 - t) * c0_ + t * c1_;
+    const Eigen::MatrixX2d y = Eigen::PartialPivLU<Eigen::MatrixXd>(g).solve(c);
+    if (!y.allFinite()) return false;
+    x.noalias() = space_ * y;
+    return x.allFinite();
+  }
+  /// Adds both coordinates of the solution x to the space (what is new in
+  /// them, orthonormalized twice; nothing if it is already in the space to
+  /// rounding, or the space is full).
+  void add_to_space(const Eigen::MatrixX2d& x) {
+    for (int c = 0; c < 2; ++c) {
+      if (space_.cols() >= kMaxSpace) drop_oldest(kDrop);
+      Eigen::VectorXd v = x.col(c);
+      const double norm0 = v.norm();
+      if (!(norm0 > 0) || !std::isfinite(norm0)) continue;
+      for (int pass = 0; pass < 2 && space_.cols() > 0; ++pass) v -= space_ * (space_.transpose() * v);
+      const double norm = v.norm();
+      if (!(norm > 1e-12 * norm0)) continue;
+      v /= norm;
+      const Eigen::Index k = space_.cols();
+      const Eigen::VectorXd a0v = a0_ * v, a1v = a1_ * v;
+      const Eigen::VectorXd a0tv = a0_.transpose() * v, a1tv = a1_.transpose() * v;
+      g0_.conservativeResize(k + 1, k + 1);
+      g1_.conservativeResize(k + 1, k + 1);
+      if (k > 0) {
+        g0_.col(k).head(k) = space_.transpose() * a0v;
+        g1_.col(k).head(k) = space_.transpose() * a1v;
+        g0_.row(k).head(k) = (space_.transpose() * a0tv).transpose();
+        g1_.row(k).head(k) = (space_.transpose() * a1tv).transpose();
+      }
+      g0_(k, k) = v.dot(a0v);
+      g1_(k, k) = v.dot(a1v);
+      c0_.conservativeResize(k + 1, 2);
+      c1_.conservativeResize(k + 1, 2);
+      c0_.row(k) = v.transpose() * b0_.cast<double>();
+      c1_.row(k) = v.transpose() * b1_.cast<double>();
+      space_.conservativeResize(v.size(), k + 1);
+      space_.col(k) = v;
+    }
+  }
+  /// Forgets the `count` oldest columns of the space (the rest stays
+  /// orthonormal): a window over the latest solutions.
+  void drop_oldest(Eigen::Index count) {
+    const Eigen::Index k = space_.cols(), keep = k - std::min(count, k);
+    space_ = Eigen::MatrixXd(space_.rightCols(keep));
+    g0_ = Eigen::MatrixXd(g0_.bottomRightCorner(keep, keep));
+    g1_ = Eigen::MatrixXd(g1_.bottomRightCorner(keep, keep));
+    c0_ = Eigen::MatrixX2d(c0_.bottomRows(keep));
+    c1_ = Eigen::MatrixX2d(c1_.bottomRows(keep));
+  }
+  static constexpr Eigen::Index kDrop = 16;
+
+  /// Columns of the space (two per solution, at most kMaxSpace).
+  int space_size() const { return int(space_.cols()); }
+  static constexpr Eigen::Index kMaxSpace = 64;
 
   /// Interior coordinates in the source embedding: the first warm start.
   Eigen::MatrixX2d source_coordinates() const {
@@ -143,16 +383,16 @@ class MorphSystem {
   /// Solves the factorized system; x holds the interior coordinates.
   Eigen::MatrixX2d solve() const {
     const Eigen::MatrixX2d b = rhs().cast<double>();
-    return lu_.solve(b);
+    return lu().solve(b);
   }
 
   /// Iterative refinement: residuals of the blended system computed in long
   /// double from the endpoint values (so the blend itself is not rounded to
   /// double), corrections solved with the double factorization.
-  Eigen::MatrixX2d refine(const Eigen::MatrixX2d& start, int rounds) const {
-    const long double t = t_;
+  Eigen::MatrixX2d refine(double time, const Eigen::MatrixX2d& start, int rounds) const {
+    const long double t = time;
     LongVector x = start.cast<long double>();
-    const LongVector b = rhs();
+    const LongVector b = (1 - t) * b0_ + t * b1_;
     for (int round = 0; round < rounds; ++round) {
       LongVector r = b;
       for (int col = 0; col < a0_.outerSize(); ++col)
@@ -162,7 +402,7 @@ class MorphSystem {
           r(row, 0) -= a * x(col, 0);
           r(row, 1) -= a * x(col, 1);
         }
-      const Eigen::MatrixX2d correction = lu_.solve(Eigen::MatrixX2d(r.cast<double>()));
+      const Eigen::MatrixX2d correction = lu().solve(Eigen::MatrixX2d(r.cast<double>()));
       if (!correction.allFinite()) break;
       x += correction.cast<long double>();
     }
@@ -187,7 +427,32 @@ class MorphSystem {
   SparseMatrix a0_, a1_, a_;
   LongVector b0_, b1_;
   double t_ = 0;
-  Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
+  Eigen::MatrixX2d b_;   // the right-hand side at the prepared time
+  double tolerance_ = 0;  // the iteration's residual tolerance there
+  Eigen::MatrixXd space_, g0_, g1_;  // the space of solutions V, V^T A0 V, V^T A1 V
+  Eigen::MatrixX2d c0_, c1_;          // V^T b0, V^T b1
+  bool blended_ = false;  // a_ holds the blend at blended_t_
+  double blended_t_ = 0;
+  /// Factorizations kept, each at its time: a scrub back and forth finds one
+  /// near every time it asks, a playback in order uses the latest. Up to
+  /// kMaxAnchors and kAnchorBudgetBytes for all, then the least recently
+  /// used is factorized anew.
+  struct Anchor {
+    double t;
+    long used;
+    std::unique_ptr<CompactLU> factors;
+  };
+  LU lu_;  // analysed once; factorizes every anchor, whose factors it copies
+  static constexpr std::size_t kMaxAnchors = 16;
+  static constexpr double kAnchorBudgetBytes = 512.0 * 1024 * 1024;
+  /// About what one anchor holds: its L and U nonzeros, value and index.
+  double anchor_bytes() const {
+    return 12.0 * double(anchors_.front().factors->nonzeros());
+  }
+  std::vector<Anchor> anchors_;
+  std::size_t current_ = 0;  // the anchor of the iteration and refinement
+  long clock_ = 0;
+  const CompactLU& lu() const { return *anchors_[current_].factors; }
 };
 
 }  // namespace
@@ -196,11 +461,15 @@ struct MorphSolver::State {
   State(const FigureTriangulation& triangulation, WeightKind kind) : tri(triangulation), system(tri, kind) {}
   const FigureTriangulation tri;  // before `system`, which refers to it
   MorphSystem system;
-  Eigen::MatrixX2d guess;  // warm start of the next solve(): the previous solve()'s solution
-  Eigen::MatrixX2d x;      // the last solution
+  Eigen::MatrixX2d start;  // the interior coordinates of the source: the first warm start
+  // The last kHistory solutions and their times, the latest last: the warm
+  // starts of the next solve().
+  static constexpr std::size_t kHistory = 3;
+  std::vector<std::pair<double, Eigen::MatrixX2d>> history;
+  Eigen::MatrixX2d x;  // the last solution
+  double last_t = 0;   // its time
   bool solved = false;
   bool anchored = false;        // a factorization exists to iterate on
-  bool anchor_too_far = false;  // the last iteration did not converge
   bool last_factorized = false;
   MorphSolverStats stats;
 
@@ -217,6 +486,60 @@ struct MorphSolver::State {
     last_factorized = true;
     solved = true;
   }
+
+  // Records the last solution x at t as a warm start.
+  void remember(double t) {
+    ++stats.solves;
+    last_t = t;
+    for (auto it = history.begin(); it != history.end(); ++it)
+      if (it->first == t) {
+        history.erase(it);
+        break;
+      }
+    if (history.size() == kHistory) history.erase(history.begin());
+    history.emplace_back(t, x);
+  }
+
+  // Warm starts for t, best first on a tie: the polynomial through the
+  // latest solutions at distinct times evaluated at t (quadratic through
+  // three, linear through two; x(t) is smooth, a rational function of t, so
+  // frames at even steps are extrapolated to O(h^3)), and the remembered
+  // solution nearest in time. iterate() starts from the one of least
+  // residual, so a wild extrapolation (a far jump in a scrub) costs one
+  // residual, not steps.
+  std::vector<Eigen::MatrixX2d> warm_starts(double t) const {
+    std::vector<Eigen::MatrixX2d> guesses;
+    if (history.empty()) {
+      guesses.push_back(start);
+      return guesses;
+    }
+    const std::size_t k = history.size();
+    for (std::size_t points = std::min<std::size_t>(k, 3); points >= 2; --points) {
+      // Lagrange basis on the `points` latest times.
+      const std::size_t first = k - points;
+      Eigen::MatrixX2d p = Eigen::MatrixX2d::Zero(x.rows(), 2);
+      bool distinct = true;
+      for (std::size_t i = first; i < k && distinct; ++i) {
+        double weight = 1;
+        for (std::size_t j = first; j < k; ++j) {
+          if (j == i) continue;
+          const double gap = history[i].first - history[j].first;
+          if (gap == 0) {
+            distinct = false;
+            break;
+          }
+          weight *= (t - history[j].first) / gap;
+        }
+        p += weight * history[i].second;
+      }
+      if (distinct && p.allFinite()) guesses.push_back(std::move(p));
+    }
+    std::size_t nearest = k - 1;
+    for (std::size_t i = 0; i < k; ++i)
+      if (std::abs(history[i].first - t) < std::abs(history[nearest].first - t)) nearest = i;
+    guesses.push_back(history[nearest].second);
+    return guesses;
+  }
 };
 
 namespace {
@@ -227,7 +550,7 @@ void check_time(double t) {
 
 MorphSolver::MorphSolver(const FigureTriangulation& triangulation, WeightKind kind)
     : state_(std::make_unique<State>(triangulation, kind)) {
-  state_->guess = state_->system.source_coordinates();
+  state_->start = state_->system.source_coordinates();
 }
 MorphSolver::~MorphSolver() = default;
 MorphSolver::MorphSolver(MorphSolver&&) noexcept = default;
@@ -238,31 +561,64 @@ int MorphSolver::unknowns() const { return state_->system.unknowns(); }
 std::vector<Vec2> MorphSolver::solve(double t) {
   check_time(t);
   State& s = *state_;
-  // The first solve is factorized; later ones iterate on the latest
-  // factorization and refactorize only when it is too far. Right after an
-  // iteration that did not converge, times are too far apart for the
-  // anchor: factorize without trying.
-  bool direct = !s.anchored || s.anchor_too_far;
   s.last_factorized = false;
-  if (!direct) {
+  // A time among the latest solved: the same positions again, bit for bit.
+  for (const auto& entry : s.history)
+    if (entry.first == t) {
+      s.x = entry.second;
+      s.remember(t);
+      return s.system.positions(s.x);
+    }
+  bool solved = false, projected = false;
+  if (s.anchored) {
     const auto begin = Clock::now();
-    direct = !s.system.iterate(t, s.guess, s.x);
+    s.system.choose_anchor(t);
+    s.system.prepare(t);
+    // 1. The projection onto the space of earlier solutions, taken as it is
+    //    when its residual is small enough: no triangular solve at all.
+    Eigen::MatrixX2d r, best_r;
+    double best = std::numeric_limits<double>::infinity();
+    if (s.system.space_guess(t, s.x)) best = s.system.residual(s.x, best_r);
+    if (best <= s.system.accept_tolerance()) {
+      solved = projected = true;
+    } else {
+      // 2. Iteration on the anchor from the best warm start: that
+      //    projection, the extrapolations or the nearest solution.
+      for (Eigen::MatrixX2d& guess : s.warm_starts(t)) {
+        const double norm = s.system.residual(guess, r);
+        if (!(norm >= best)) {
+          best = norm;
+          s.x.swap(guess);
+          best_r.swap(r);
+        }
+      }
+      int steps = 0;
+      solved = best_r.rows() == s.x.rows() && s.system.iterate(s.x, best_r, best, steps);
+      s.stats.iterations += steps;
+    }
     s.stats.solve_ms += ms_since(begin);
-    s.anchor_too_far = direct;
-    s.solved = true;
-  } else {
-    s.anchor_too_far = false;
   }
-  if (direct) s.factorize_and_solve(t);
+  // 3. A factorization at t, the new anchor.
+  if (!solved) s.factorize_and_solve(t);
+  if (projected) {
+    ++s.stats.projected;
+  } else {
+    const auto begin = Clock::now();
+    s.system.add_to_space(s.x);
+    s.stats.solve_ms += ms_since(begin);
+  }
   s.anchored = true;
-  s.guess = s.x;
+  s.solved = true;
+  s.remember(t);
   return s.system.positions(s.x);
 }
 
 std::vector<Vec2> MorphSolver::solve_directly(double t) {
   check_time(t);
   state_->factorize_and_solve(t);
+  state_->system.add_to_space(state_->x);
   state_->anchored = true;
+  state_->remember(t);
   return state_->system.positions(state_->x);
 }
 
@@ -270,7 +626,7 @@ std::vector<Vec2> MorphSolver::refine(int rounds) {
   State& s = *state_;
   if (!s.solved) throw InvalidArgumentError("MorphSolver::refine needs a solve first");
   const auto begin = Clock::now();
-  std::vector<Vec2> positions = s.system.positions(s.system.refine(s.x, rounds));
+  std::vector<Vec2> positions = s.system.positions(s.system.refine(s.last_t, s.x, rounds));
   s.stats.solve_ms += ms_since(begin);
   return positions;
 }

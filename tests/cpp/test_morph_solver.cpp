@@ -2,9 +2,13 @@
 // repeatedly, at any time and in any order.
 #include "catch.h"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdint>
 
 #include "stickmorph/errors.h"
+#include "stickmorph/figure_triangulation.h"
 #include "stickmorph/morph.h"
 #include "stickmorph/morph_solver.h"
 
@@ -113,4 +117,96 @@ TEST_CASE("MorphSolver: refuses times outside [0, 1] and refinement before a sol
   FigureTriangulation broken = edge_in_square();
   broken.triangles.pop_back();
   CHECK_THROWS_AS(MorphSolver(broken), InvalidArgumentError);
+}
+
+namespace {
+
+// A polyline of 40 vertices on a sine wave, the target on another: a
+// triangulation with a few dozen unknowns whose morph moves every node.
+FigureTriangulation sine_polyline() {
+  std::vector<Vec2> source, target;
+  std::vector<std::array<std::int64_t, 2>> edges;
+  for (int i = 0; i < 40; ++i) {
+    source.push_back({double(i), 3 * std::sin(i * 0.3)});
+    target.push_back({double(i), 2 * std::sin(i * 0.5 + 1)});
+    if (i > 0) edges.push_back({i - 1, i});
+  }
+  return triangulate_figures(make_stick_figure(source, edges), make_stick_figure(target, edges));
+}
+
+double largest_difference(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
+  double d = 0;
+  for (std::size_t v = 0; v < a.size(); ++v)
+    for (int c = 0; c < 2; ++c) d = std::max(d, std::abs(a[v][c] - b[v][c]));
+  return d;
+}
+
+}  // namespace
+
+TEST_CASE("MorphSolver: in order, frames come from earlier solutions and one factorization serves", "[morph_solver]") {
+  const FigureTriangulation tri = sine_polyline();
+  MorphSolver solver(tri);
+  REQUIRE(solver.unknowns() > 10);
+  constexpr int kFrames = 50;
+  for (int f = 1; f + 1 < kFrames; ++f) {
+    const double t = double(f) / (kFrames - 1);
+    const std::vector<Vec2> x = solver.solve(t);
+    CHECK(largest_difference(x, solve_morph_frame(tri, t)) < 1e-8);
+  }
+  const MorphSolverStats& stats = solver.stats();
+  CHECK(stats.solves == kFrames - 2);
+  CHECK(stats.factorizations == 1);
+  // Frames are projected onto the space of earlier solutions; many need no
+  // triangular solve at all, the others start there (or from the polynomial
+  // through the latest solutions) and need about one step.
+  CHECK(stats.projected >= kFrames / 4);
+  CHECK(stats.iterations <= 2 * (kFrames - 2));
+}
+
+TEST_CASE("MorphSolver: a scrub back and forth matches the direct solves", "[morph_solver]") {
+  const FigureTriangulation tri = sine_polyline();
+  MorphSolver solver(tri);
+  // Far jumps: an extrapolation there is wild, the nearest remembered
+  // solution (or a factorization) is used instead; repeated times too.
+  for (double t : {0.5, 0.52, 0.54, 0.05, 0.97, 0.97, 0.3, 0.31, 0.0, 1.0, 0.62, 0.6, 0.58}) {
+    const std::vector<Vec2> x = solver.solve(t);
+    CHECK(largest_difference(x, solve_morph_frame(tri, t)) < 1e-8);
+  }
+  CHECK(solver.stats().solves == 13);
+  // solve_directly is still the fresh factorization, bit for bit, and joins
+  // the warm starts.
+  CHECK(solver.solve_directly(0.4) == solve_morph_frame(tri, 0.4));
+  CHECK(largest_difference(solver.solve(0.41), solve_morph_frame(tri, 0.41)) < 1e-8);
+  CHECK_FALSE(solver.last_solve_factorized());
+}
+
+TEST_CASE("MorphSolver: two solvers given the same times agree bit for bit", "[morph_solver]") {
+  // The contract of stickmorph.MorphSolver: solving morph()'s times in order
+  // from a new solver gives morph()'s frames exactly. The warm starts depend
+  // only on the times asked, so the same sequence gives the same results.
+  const FigureTriangulation tri = sine_polyline();
+  StickFigure source = make_stick_figure(
+      std::vector<Vec2>(tri.source.begin(), tri.source.begin() + tri.figure_vertices),
+      [&] {
+        std::vector<std::array<std::int64_t, 2>> edges;
+        for (int i = 1; i < tri.figure_vertices; ++i) edges.push_back({i - 1, i});
+        return edges;
+      }());
+  MorphOptions options;
+  options.frames = 30;
+  const MorphResult morph = morph_triangulation(tri, source, options);
+  MorphSolver solver(tri);
+  for (int f = 1; f + 1 < options.frames; ++f) CHECK(morph.frames[f] == solver.solve(morph.times[f]));
+  CHECK(morph.stats.factorizations == solver.stats().factorizations);
+}
+
+TEST_CASE("MorphSolver: a time asked again gives the same positions", "[morph_solver]") {
+  const FigureTriangulation tri = sine_polyline();
+  MorphSolver solver(tri);
+  const std::vector<Vec2> first = solver.solve(0.5);
+  CHECK(solver.solve(0.5) == first);
+  const std::vector<Vec2> other = solver.solve(0.55);
+  CHECK(solver.solve(0.5) == first);
+  CHECK(solver.solve(0.55) == other);
+  CHECK(solver.stats().solves == 5);
 }
