@@ -17,6 +17,10 @@
 #   morph.jsonl         stickmorph_benchmark_morph on the generated corpus
 #   correspondence.json stickmorph_benchmark_correspondence (issue 13): automatic
 #                       correspondence against size (correspondence.md: its table)
+#   scrub.jsonl         stickmorph_benchmark_scrub (issue 15): frames per second of
+#                       the stateful solvers at 10^3 and 10^4 vertices, and at
+#                       10^5 with fewer frames, barycentric only (scrub.md,
+#                       scrub_large.md: their tables)
 #   motion_corpus/      scripts/motion_corpus.py: the motion-quality corpus
 #   motion.json         scripts/motion_quality.py on it (issue 12, docs/MOTION.md):
 #                       rigid (if `stickmorph morph --help` lists it),
@@ -25,18 +29,23 @@
 #   run.json            machine, date, commit, command, runtime
 # and then scripts/make_benchmarks.py (Debian's /usr/bin/python3 with
 # python3-matplotlib) writes BENCHMARKS.md and the SVG plots from those files.
-# --quick runs sizes 10 to 300 only, to try the pipeline in a minute; the
-# report gives the command it was made with.
+# --quick runs sizes 10 to 300 only (the scrubbing benchmark at 1000 with 60
+# frames), to try the pipeline in a minute; the report gives the command it
+# was made with.
 set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 start=$(date +%s)
 command="bash scripts/benchmarks.sh"
 sizes=10,30,100,300,1000,3000,10000
+scrub_sizes=1000,10000
+scrub_frames=240
+scrub_large=100000
+scrub_large_frames=24
 working_tree=0
 for argument in "$@"; do
   case "$argument" in
-    --quick) sizes=10,30,100,300 ;;
+    --quick) sizes=10,30,100,300; scrub_sizes=1000; scrub_frames=60; scrub_large= ;;
     --working-tree) working_tree=1 ;;
     *) echo "usage: bash scripts/benchmarks.sh [--quick] [--working-tree]" >&2; exit 2 ;;
   esac
@@ -85,11 +94,11 @@ if [[ "$build_type" != "Release" ]]; then
   exit 2
 fi
 cmake --build "$build" -j2 --target stickmorph_benchmark stickmorph_benchmark_morph \
-  stickmorph_benchmark_correspondence stickmorph
+  stickmorph_benchmark_correspondence stickmorph_benchmark_scrub stickmorph
 
 mkdir -p "$data"
 rm -f "$data/polygon_pairs.json" "$data/morph.jsonl" "$data/correspondence.json" "$data/motion.json" \
-  "$data/run.json"
+  "$data/scrub.jsonl" "$data/scrub_large.jsonl" "$data/run.json"
 
 echo "==== polygon-pair corpus (tests/data/polygon_pairs) ===="
 "$build/stickmorph_benchmark" --json "$data/polygon_pairs.json" "$source_dir/tests/data/polygon_pairs" \
@@ -99,6 +108,18 @@ echo "==== morph corpus (sizes $sizes, $frames frames; progress below) ===="
 "$build/stickmorph_benchmark_morph" --sizes "$sizes" --frames "$frames" --aronov-max "$aronov_max" \
   --sg2001-max "$sg2001_max" --memory-limit-mib "$memory_limit_mib" --json "$data/morph.jsonl" \
   > "$data/morph.md"
+
+echo "==== scrubbing (issue 15: stickmorph_benchmark_scrub, sizes $scrub_sizes, $scrub_frames frames; progress below) ===="
+"$build/stickmorph_benchmark_scrub" --sizes "$scrub_sizes" --frames "$scrub_frames" --families polyline,triangulation \
+  --json "$data/scrub.jsonl" > "$data/scrub.md"
+if [[ -n "$scrub_large" ]]; then
+  # 10^5 vertices: triangulating takes minutes there (the rigid setup would
+  # triangulate again) and a frame up to a second, so fewer frames and the
+  # barycentric solver only, to keep the whole command near a quarter hour.
+  "$build/stickmorph_benchmark_scrub" --sizes "$scrub_large" --frames "$scrub_large_frames" --no-rigid \
+    --families polyline,triangulation --json "$data/scrub_large.jsonl" > "$data/scrub_large.md"
+  cat "$data/scrub_large.jsonl" >> "$data/scrub.jsonl"
+fi
 
 echo "==== correspondence (issue 13: stickmorph_benchmark_correspondence, sizes $sizes; progress below) ===="
 "$build/stickmorph_benchmark_correspondence" --sizes "$sizes" --memory-limit-mib "$memory_limit_mib" \

@@ -19,7 +19,14 @@
 #include <new>
 #include <string>
 
+#include <Eigen/SparseLU>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 #include "stickmorph/errors.h"
+#include "stickmorph/figure_triangulation.h"
+#include "stickmorph/morph.h"
 
 namespace stickmorph::bench {
 
@@ -95,6 +102,63 @@ inline ChildResult run_child(const std::function<std::string()>& work, int secon
     result.body = text.substr(space + 1);
   }
   return result;
+}
+
+/// Issue 15's yardstick: a fresh sparse LU factorize-and-solve of the
+/// morph's system at time t on `tri` ((I - W_interior(t)) x = W_boundary(t)
+/// x_boundary, W(t) blending the mean value weights of tri.source and
+/// tri.target), with the ordering MorphSolver uses (COLAMD): symbolic
+/// analysis, numeric factorization and the solve of both coordinates,
+/// timed; the weights and the assembly are not. The median of `repeats`
+/// runs, in milliseconds; -1 if the factorization failed.
+inline double fresh_lu_ms(const FigureTriangulation& tri, double t, int repeats = 3) {
+  using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+  const RowMatrix w0 = barycentric_weights(tri, tri.source, WeightKind::MeanValue);
+  const RowMatrix w1 = barycentric_weights(tri, tri.target, WeightKind::MeanValue);
+  const RowMatrix w = (1 - t) * w0 + t * w1;
+  const int nodes = tri.node_count();
+  std::vector<int> interior_index(nodes, -1);
+  int interior = 0;
+  for (int v = 0; v < nodes; ++v)
+    if (v < tri.figure_vertices || v >= tri.figure_vertices + tri.enclosure_vertices) interior_index[v] = interior++;
+  std::vector<Eigen::Triplet<double>> triplets;
+  Eigen::MatrixX2d b = Eigen::MatrixX2d::Zero(interior, 2);
+  for (int v = 0; v < nodes; ++v) {
+    if (interior_index[v] < 0) continue;
+    triplets.emplace_back(interior_index[v], interior_index[v], 1.0);
+    for (RowMatrix::InnerIterator it(w, v); it; ++it) {
+      const int u = int(it.col());
+      if (interior_index[u] >= 0) {
+        triplets.emplace_back(interior_index[v], interior_index[u], -it.value());
+      } else {
+        b(interior_index[v], 0) += it.value() * tri.source[u][0];
+        b(interior_index[v], 1) += it.value() * tri.source[u][1];
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> a(interior, interior);
+  a.setFromTriplets(triplets.begin(), triplets.end());
+  a.makeCompressed();
+  std::vector<double> times;
+  for (int r = 0; r < std::max(1, repeats); ++r) {
+    const auto start = Clock::now();
+    Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
+    lu.analyzePattern(a);
+    lu.factorize(a);
+    const Eigen::MatrixX2d x = lu.solve(b);
+    times.push_back(ms_since(start));
+    if (lu.info() != Eigen::Success || !x.allFinite()) return -1;
+  }
+  std::sort(times.begin(), times.end());
+  return times[times.size() / 2];
+}
+
+/// The median of `values` (0 for none).
+inline double median_of(std::vector<double> values) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  const std::size_t h = values.size() / 2;
+  return values.size() % 2 ? values[h] : (values[h - 1] + values[h]) / 2;
 }
 
 }  // namespace stickmorph::bench

@@ -48,9 +48,12 @@
 #include "stickmorph/compatibility.h"
 #include "stickmorph/decomposition.h"
 #include "stickmorph/figure_triangulation.h"
+#include "stickmorph/frame_certificate.h"
 #include "stickmorph/frame_verification.h"
+#include "stickmorph/guided_morph.h"
 #include "stickmorph/json.h"
 #include "stickmorph/morph.h"
+#include "stickmorph/morph_solver.h"
 #include "stickmorph/morph_stick_figures.h"
 
 namespace stickmorph::bench {
@@ -141,42 +144,6 @@ class Record {
 // ---------------------------------------------------------------------------
 // The measured work, run inside a child.
 
-/// A fresh factorisation and solve of one frame's system, for comparison
-/// with the morph's amortised per-frame cost.
-double fresh_lu_ms(const FigureTriangulation& tri) {
-  const Eigen::SparseMatrix<double, Eigen::RowMajor> w = barycentric_weights(tri, tri.source, WeightKind::MeanValue);
-  const int nodes = tri.node_count();
-  std::vector<int> interior_index(nodes, -1);
-  int interior = 0;
-  for (int v = 0; v < nodes; ++v)
-    if (v < tri.figure_vertices || v >= tri.figure_vertices + tri.enclosure_vertices) interior_index[v] = interior++;
-  const auto start = Clock::now();
-  std::vector<Eigen::Triplet<double>> triplets;
-  Eigen::VectorXd bx = Eigen::VectorXd::Zero(interior), by = Eigen::VectorXd::Zero(interior);
-  for (int v = 0; v < nodes; ++v) {
-    if (interior_index[v] < 0) continue;
-    triplets.emplace_back(interior_index[v], interior_index[v], 1.0);
-    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(w, v); it; ++it) {
-      const int u = int(it.col());
-      if (interior_index[u] >= 0) {
-        triplets.emplace_back(interior_index[v], interior_index[u], -it.value());
-      } else {
-        bx[interior_index[v]] += it.value() * tri.source[u][0];
-        by[interior_index[v]] += it.value() * tri.source[u][1];
-      }
-    }
-  }
-  Eigen::SparseMatrix<double> a(interior, interior);
-  a.setFromTriplets(triplets.begin(), triplets.end());
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
-  lu.analyzePattern(a);
-  lu.factorize(a);
-  const Eigen::VectorXd x = lu.solve(bx), y = lu.solve(by);
-  const double ms = ms_since(start);
-  if (lu.info() != Eigen::Success || !std::isfinite(x.sum() + y.sum())) return -1;
-  return ms;
-}
-
 /// Generation and validation, shared by every method's child.
 struct Figures {
   StickFigure source, target;
@@ -226,6 +193,72 @@ std::string run_spiderweb(const std::string& family, int requested, SteinerMetho
   const FigureTriangulation tri = triangulate_figures(figures.source, figures.target, options, &stats);
   add_triangulation_stats(record, ms_since(start), stats, tri);
   return record.str();
+}
+
+/// Issue 15: what a frame costs as the product makes it, against a fresh
+/// sparse LU factorize-and-solve of the same system (fresh_lu_ms, at t =
+/// 0.5), all in this child. Barycentric: a new MorphSolver on the
+/// barycentric method's triangulation solving the morph's interior times
+/// f / (N - 1) in order, each solve followed by certificate_defect on its
+/// result (what morph_triangulation does per frame). Rigid (the default):
+/// prepare_rigid_morph, then GuidedMorph::frame(t, verify) at the same
+/// times (the certificate included), against the fresh LU of the
+/// barycentric system on the rigid triangulation's connectivity, the
+/// pattern of its blended system. Mean (amortised: the first interior
+/// frame factorizes, as in a morph) and median per interior frame.
+void add_frame_costs(Record& record, const Figures& figures, int frames, const FigureTriangulation& barycentric_tri,
+                     const FigureTriangulation& rigid_tri) {
+  std::vector<double> times;
+  for (int f = 1; f + 1 < frames; ++f) times.push_back(double(f) / (frames - 1));
+  {
+    const double lu = fresh_lu_ms(barycentric_tri, 0.5);
+    MorphSolver solver(barycentric_tri);
+    std::vector<double> frame_ms;
+    double solve_ms = 0, certificate_ms = 0;
+    int defects = 0;
+    for (double t : times) {
+      auto start = Clock::now();
+      const std::vector<Vec2> positions = solver.solve(t);
+      const double solved = ms_since(start);
+      start = Clock::now();
+      if (!certificate_defect(barycentric_tri, positions).empty()) ++defects;
+      const double certified = ms_since(start);
+      solve_ms += solved;
+      certificate_ms += certified;
+      frame_ms.push_back(solved + certified);
+    }
+    const double count = std::max<double>(1, double(times.size()));
+    const double mean = (solve_ms + certificate_ms) / count;
+    record.set("fresh_lu_ms", lu)
+        .set("frame_mean_ms", mean)
+        .set("frame_median_ms", median_of(frame_ms))
+        .set("frame_solve_ms", solve_ms / count)
+        .set("frame_certificate_ms", certificate_ms / count)
+        .set("frame_lu_ratio", lu > 0 ? mean / lu : std::nan(""))
+        .set("frame_factorizations", solver.stats().factorizations)
+        .set("frame_iterations", solver.stats().iterations)
+        .set("frame_certificate_defects", defects)
+        .set("frame_unknowns", solver.unknowns());
+  }
+  {
+    const double lu = fresh_lu_ms(rigid_tri, 0.5);
+    MorphStickFiguresOptions options;
+    options.frames = frames;
+    GuidedMorph morph = prepare_rigid_morph(figures.source, figures.target, options);
+    std::vector<double> frame_ms;
+    for (double t : times) {
+      const auto start = Clock::now();
+      morph.frame(t, -1, true, "benchmark: ");
+      frame_ms.push_back(ms_since(start));
+    }
+    double total = 0;
+    for (double ms : frame_ms) total += ms;
+    const double mean = total / std::max<double>(1, double(times.size()));
+    record.set("rigid_fresh_lu_ms", lu)
+        .set("rigid_frame_mean_ms", mean)
+        .set("rigid_frame_median_ms", median_of(frame_ms))
+        .set("rigid_frame_lu_ratio", lu > 0 ? mean / lu : std::nan(""));
+  }
 }
 
 /// improved: the whole pipeline (the default, rigid method), then our frames
@@ -279,7 +312,7 @@ std::string run_improved(const std::string& family, int requested, int frames) {
   const std::vector<int> linear_invalid = morph_stick_figures(source, figures.target, straight).stats.invalid_frames;
   record.set("linear_invalid_frames", int(linear_invalid.size()));
   record.set("linear_first_invalid", linear_invalid.empty() ? -1 : linear_invalid.front());
-  record.set("fresh_lu_ms", fresh_lu_ms(tri));
+  add_frame_costs(record, figures, frames, *barycentric.triangulation, tri);
   return record.str();
 }
 
