@@ -22,6 +22,27 @@ constexpr long kDeepAverage = 12;
 constexpr int kRoutedCutMinCorners = 64;
 constexpr double kCutGain = 0.8;
 
+// Glues `piece` into `mesh`: its corner k is mesh node nodes[k] (a corner of
+// the pair, or a bend of a routed cut), its Steiner vertices are appended as
+// new nodes, and its live triangles are renumbered accordingly.
+void glue_piece(const CompatibleMesh& piece, const std::vector<int>& nodes, CompatibleMesh& mesh) {
+  const int size = int(nodes.size());
+  const int offset = int(mesh.source.size());
+  for (std::size_t v = piece.corners; v < piece.source.size(); ++v) {
+    mesh.source.push_back(piece.source[v]);
+    mesh.target.push_back(piece.target[v]);
+  }
+  for (std::size_t t = 0; t < piece.triangles.size(); ++t) {
+    if (!piece.alive.empty() && !piece.alive[t]) continue;
+    Triangle global;
+    for (int j = 0; j < 3; ++j) {
+      const int v = piece.triangles[t][j];
+      global[j] = v < size ? nodes[std::size_t(v)] : offset + (v - size);
+    }
+    mesh.triangles.push_back(global);
+  }
+}
+
 // The pair cut along `cut` into `pieces`, each triangulated by
 // piecewise_mesh and glued: corners first, then the cut's bends, then the
 // pieces' Steiner vertices. Bends that are redundant in both polygons once
@@ -50,20 +71,7 @@ CompatibleMesh routed_mesh(const PolygonPair& pair, const RoutedCut& cut, const 
       piece = piecewise_mesh(routed.pair, routed.source_base, routed.target_base, options, spiderweb_steiner,
                              routed_cuts_taken);
     }
-    const int offset = int(mesh.source.size());
-    for (std::size_t v = piece.corners; v < piece.source.size(); ++v) {
-      mesh.source.push_back(piece.source[v]);
-      mesh.target.push_back(piece.target[v]);
-    }
-    for (std::size_t t = 0; t < piece.triangles.size(); ++t) {
-      if (!piece.alive.empty() && !piece.alive[t]) continue;
-      Triangle global;
-      for (int j = 0; j < 3; ++j) {
-        const int v = piece.triangles[t][j];
-        global[j] = v < size ? routed.nodes[std::size_t(v)] : offset + (v - size);
-      }
-      mesh.triangles.push_back(global);
-    }
+    glue_piece(piece, routed.nodes, mesh);
   }
   mesh.alive.assign(mesh.triangles.size(), 1);
   // Only the bends are new here: every other Steiner vertex already failed
@@ -202,20 +210,7 @@ CompatibleMesh piecewise_mesh(const PolygonPair& pair, const std::vector<std::ar
                             routed_cuts_taken);
     }
     // Corners of the piece are corners of the pair; its Steiner vertices are new.
-    const int offset = int(mesh.source.size());
-    for (std::size_t v = piece.corners; v < piece.source.size(); ++v) {
-      mesh.source.push_back(piece.source[v]);
-      mesh.target.push_back(piece.target[v]);
-    }
-    for (std::size_t t = 0; t < piece.triangles.size(); ++t) {
-      if (!piece.alive.empty() && !piece.alive[t]) continue;
-      Triangle global;
-      for (int j = 0; j < 3; ++j) {
-        const int v = piece.triangles[t][j];
-        global[j] = v < m ? cycle[v] : offset + (v - m);
-      }
-      mesh.triangles.push_back(global);
-    }
+    glue_piece(piece, cycle, mesh);
   }
   mesh.alive.assign(mesh.triangles.size(), 1);
   return mesh;
