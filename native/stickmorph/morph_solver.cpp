@@ -147,7 +147,7 @@ class CompactLU {
 /// frames (benchmark_morph, before this: frame / fresh LU 0.3-1.05 over the
 /// families). Three additions, each measured there: (1) the Galerkin
 /// projection onto the space of earlier solutions, accepted without a step
-/// when its residual is a tenth of the tolerance, otherwise the warm start
+/// when its residual meets the tolerance, otherwise the warm start
 /// (with the quadratic and linear extrapolation through the latest three
 /// solutions and the nearest one: the least residual wins); (2) up to 16
 /// factorizations kept (within kAnchorBudgetBytes), the nearest in time
@@ -157,6 +157,24 @@ class CompactLU {
 /// solves (CompactLU). A block Krylov space of A_a^-1 (A1 - A0) at each
 /// anchor (moment matching) was tried and dropped: accurate only within
 /// about 0.1 of the anchor, and its solves cost more than they saved.
+///
+/// What bounds a frame of a single playback in order (measured at 10^3
+/// vertices, 48 frames): one triangular solve pair costs 0.02 ms and a
+/// residual 0.02 ms, but a numeric factorization about as much as the fresh
+/// LU itself, and a frame starts five to eight digits short of the
+/// tolerance: the playback has not yet visited its time, so every guess is
+/// an extrapolation (the polynomial through the latest three solutions
+/// misses by about 1e6 tolerances, the space's projection by 5-30), and
+/// each step on an anchor one frame behind gains about 1.5 digits. Two
+/// alternatives were built and measured there and dropped: the anchor's
+/// corrections added to the space as well (recycled FOM: 1-2 steps per
+/// frame, but the space filled with 160 columns whose upkeep cost more
+/// than the steps saved, frame / fresh LU 0.5-1.9) and a minimal-residual
+/// iteration over the latest four solutions and the corrections only (no
+/// lasting space: 5 steps per frame, 0.36-0.68). Scrubbing, or a second
+/// playback, is where the space pays: its times are interpolated, and most
+/// frames are projected (at 10^4 vertices, a playback then a scrub of 240
+/// frames each: 251 of 476 frames without a step, 3 factorizations).
 class MorphSystem {
  public:
   MorphSystem(const FigureTriangulation& tri, WeightKind kind) : tri_(tri), topo_(build_topology(tri)) {
@@ -196,6 +214,8 @@ class MorphSystem {
       throw InternalError("morph: the source and target systems have different sparsity patterns");
     a_ = a0_;
     lu_.analyzePattern(a_);
+    capacity_ = std::max<Eigen::Index>(
+        2, std::min<Eigen::Index>(kMaxSpace, Eigen::Index(kSpaceBudgetBytes / (8.0 * std::max(m, 1)))));
   }
 
   int unknowns() const { return int(topo_.interior_nodes.size()); }
@@ -269,11 +289,18 @@ class MorphSystem {
   }
   /// The residual norm of x at the prepared time, into r.
   double residual(const Eigen::MatrixX2d& x, Eigen::MatrixX2d& r) const { return residual(b_, x, r); }
-  /// A residual at which a warm start is taken as it is, without a step: a
-  /// tenth of the iteration's tolerance, so that a frame taken from the
-  /// space of earlier solutions is no less accurate than an iterated one
-  /// (whose last step usually lands well below the tolerance).
-  double accept_tolerance() const { return 0.1 * tolerance_; }
+  /// A residual at which the projection onto the space is taken as it is,
+  /// without a step: the iteration's own tolerance, so every frame meets the
+  /// same residual bound. (A tenth of it, as before, was never met by a
+  /// projection: its residual levels off at a few tenths of the tolerance
+  /// once the space spans the morph, measured at 10^3 and 10^4 vertices.)
+  double accept_tolerance() const { return tolerance_; }
+  /// A projection this close to the tolerance is nearly in the space: once
+  /// the space is half full its frame's solution no longer joins it (one
+  /// step on the anchor recovers such a frame, while each column costs
+  /// O(m k) in every later frame and brings the space nearer to full, after
+  /// which nothing joins).
+  double near_tolerance() const { return 10 * tolerance_; }
 
   /// Iterative refinement on the last factorization (the anchor) from x
   /// (with residual r of norm `norm` at the prepared time): x += LU^-1 (b -
@@ -305,70 +332,80 @@ class MorphSystem {
 
   /// The space of earlier solutions (a reduced basis): x(t) is an analytic
   /// function of one parameter, so the solutions at a few times span all
-  /// the others to many digits. Both coordinates of every solution that
-  /// needed a triangular solve join an orthonormal basis V (up to
-  /// kMaxSpace columns); the Galerkin projection V^T A(t) V y = V^T b(t)
+  /// the others to many digits (measured at 10^3 vertices: the singular
+  /// values of 201 solutions over [0, 1] fall below 1e-11 of the first
+  /// after 30 to 70 vectors across the benchmark's families). Both
+  /// coordinates of every solution whose projection was not near the
+  /// tolerance (near_tolerance) join an orthonormal basis V (up to
+  /// capacity_ columns); the Galerkin projection V^T A(t) V y = V^T b(t)
   /// then costs O(k^3 + m k) per frame, with V^T A0 V, V^T A1 V, V^T b0 and
   /// V^T b1 kept (A(t) and b(t) blend linearly), far less than a triangular
   /// solve. Its result is accepted only by its true residual.
   bool space_guess(double t, Eigen::MatrixX2d& x) const {
-    if (space_.cols() == 0) return false;
-    const Eigen::MatrixXd g = (1 - t) * g0_ + t * g1_;
-    const Eigen::MatrixX2d c = (1 - t) * c0_ + t * c1_;
+    if (k_ == 0) return false;
+    const Eigen::MatrixXd g = (1 - t) * g0_.topLeftCorner(k_, k_) + t * g1_.topLeftCorner(k_, k_);
+    const Eigen::MatrixX2d c = (1 - t) * c0_.topRows(k_) + t * c1_.topRows(k_);
     const Eigen::MatrixX2d y = Eigen::PartialPivLU<Eigen::MatrixXd>(g).solve(c);
     if (!y.allFinite()) return false;
-    x.noalias() = space_ * y;
+    x.noalias() = space_.leftCols(k_) * y;
     return x.allFinite();
   }
-  /// Adds both coordinates of the solution x to the space (what is new in
-  /// them, orthonormalized twice; nothing if it is already in the space to
-  /// rounding, or the space is full).
+  /// Adds both coordinates of the solution x at time t to the space (what
+  /// is new in them, orthonormalized twice; nothing if it is already in the
+  /// space to rounding, or the space is full). A full space keeps what it
+  /// has: a window over the latest solutions (what this replaced) forgot the
+  /// start of a playback, so a scrub after it projected almost nothing, and
+  /// dropping columns spread over time lost the directions that later
+  /// columns are orthogonal to (measured at 10^4 vertices, a 240-frame
+  /// playback then 240 random times: the projection's residual jumped from
+  /// about the tolerance to 1e6 times it either way). The
+  /// storage is allocated once, at the capacity: a column costs its
+  /// orthogonalization and the new row and column of the projected
+  /// matrices, O(m k), and no copy of the space (conservativeResize copied
+  /// it whole for every column: a third of a frame at 10^3 vertices).
   void add_to_space(const Eigen::MatrixX2d& x) {
+    if (space_.cols() == 0) {
+      space_.resize(unknowns(), capacity_);
+      g0_.resize(capacity_, capacity_);
+      g1_.resize(capacity_, capacity_);
+      c0_.resize(capacity_, 2);
+      c1_.resize(capacity_, 2);
+    }
     for (int c = 0; c < 2; ++c) {
-      if (space_.cols() >= kMaxSpace) drop_oldest(kDrop);
+      if (k_ >= capacity_) return;
       Eigen::VectorXd v = x.col(c);
       const double norm0 = v.norm();
       if (!(norm0 > 0) || !std::isfinite(norm0)) continue;
-      for (int pass = 0; pass < 2 && space_.cols() > 0; ++pass) v -= space_ * (space_.transpose() * v);
+      const auto basis = space_.leftCols(k_);
+      for (int pass = 0; pass < 2 && k_ > 0; ++pass) v.noalias() -= basis * (basis.transpose() * v);
       const double norm = v.norm();
       if (!(norm > 1e-12 * norm0)) continue;
       v /= norm;
-      const Eigen::Index k = space_.cols();
+      const Eigen::Index k = k_;
       const Eigen::VectorXd a0v = a0_ * v, a1v = a1_ * v;
-      const Eigen::VectorXd a0tv = a0_.transpose() * v, a1tv = a1_.transpose() * v;
-      g0_.conservativeResize(k + 1, k + 1);
-      g1_.conservativeResize(k + 1, k + 1);
       if (k > 0) {
-        g0_.col(k).head(k) = space_.transpose() * a0v;
-        g1_.col(k).head(k) = space_.transpose() * a1v;
-        g0_.row(k).head(k) = (space_.transpose() * a0tv).transpose();
-        g1_.row(k).head(k) = (space_.transpose() * a1tv).transpose();
+        const Eigen::VectorXd a0tv = a0_.transpose() * v, a1tv = a1_.transpose() * v;
+        g0_.col(k).head(k).noalias() = basis.transpose() * a0v;
+        g1_.col(k).head(k).noalias() = basis.transpose() * a1v;
+        g0_.row(k).head(k).noalias() = (basis.transpose() * a0tv).transpose();
+        g1_.row(k).head(k).noalias() = (basis.transpose() * a1tv).transpose();
       }
       g0_(k, k) = v.dot(a0v);
       g1_(k, k) = v.dot(a1v);
-      c0_.conservativeResize(k + 1, 2);
-      c1_.conservativeResize(k + 1, 2);
       c0_.row(k) = v.transpose() * b0_.cast<double>();
       c1_.row(k) = v.transpose() * b1_.cast<double>();
-      space_.conservativeResize(v.size(), k + 1);
       space_.col(k) = v;
+      ++k_;
     }
   }
-  /// Forgets the `count` oldest columns of the space (the rest stays
-  /// orthonormal): a window over the latest solutions.
-  void drop_oldest(Eigen::Index count) {
-    const Eigen::Index k = space_.cols(), keep = k - std::min(count, k);
-    space_ = Eigen::MatrixXd(space_.rightCols(keep));
-    g0_ = Eigen::MatrixXd(g0_.bottomRightCorner(keep, keep));
-    g1_ = Eigen::MatrixXd(g1_.bottomRightCorner(keep, keep));
-    c0_ = Eigen::MatrixX2d(c0_.bottomRows(keep));
-    c1_ = Eigen::MatrixX2d(c1_.bottomRows(keep));
-  }
-  static constexpr Eigen::Index kDrop = 16;
 
-  /// Columns of the space (two per solution, at most kMaxSpace).
-  int space_size() const { return int(space_.cols()); }
-  static constexpr Eigen::Index kMaxSpace = 64;
+  bool space_half_full() const { return 2 * k_ >= capacity_; }
+  /// Columns of the space (two per solution, at most capacity_).
+  int space_size() const { return int(k_); }
+  /// The space's capacity: kMaxSpace columns, fewer for a system so large
+  /// that they would take more than kSpaceBudgetBytes.
+  static constexpr Eigen::Index kMaxSpace = 160;
+  static constexpr double kSpaceBudgetBytes = 64.0 * 1024 * 1024;
 
   /// Interior coordinates in the source embedding: the first warm start.
   Eigen::MatrixX2d source_coordinates() const {
@@ -429,8 +466,12 @@ class MorphSystem {
   double t_ = 0;
   Eigen::MatrixX2d b_;   // the right-hand side at the prepared time
   double tolerance_ = 0;  // the iteration's residual tolerance there
-  Eigen::MatrixXd space_, g0_, g1_;  // the space of solutions V, V^T A0 V, V^T A1 V
-  Eigen::MatrixX2d c0_, c1_;          // V^T b0, V^T b1
+  // The space V (its first k_ columns; allocated at capacity_ on first
+  // use), V^T A0 V, V^T A1 V, V^T b0 and V^T b1.
+  Eigen::MatrixXd space_, g0_, g1_;
+  Eigen::MatrixX2d c0_, c1_;
+  Eigen::Index k_ = 0;
+  Eigen::Index capacity_ = 0;
   bool blended_ = false;  // a_ holds the blend at blended_t_
   double blended_t_ = 0;
   /// Factorizations kept, each at its time: a scrub back and forth finds one
@@ -570,6 +611,7 @@ std::vector<Vec2> MorphSolver::solve(double t) {
       return s.system.positions(s.x);
     }
   bool solved = false, projected = false;
+  double projection = std::numeric_limits<double>::infinity();  // its residual
   if (s.anchored) {
     const auto begin = Clock::now();
     s.system.choose_anchor(t);
@@ -579,6 +621,7 @@ std::vector<Vec2> MorphSolver::solve(double t) {
     Eigen::MatrixX2d r, best_r;
     double best = std::numeric_limits<double>::infinity();
     if (s.system.space_guess(t, s.x)) best = s.system.residual(s.x, best_r);
+    projection = best;
     if (best <= s.system.accept_tolerance()) {
       solved = projected = true;
     } else {
@@ -602,7 +645,7 @@ std::vector<Vec2> MorphSolver::solve(double t) {
   if (!solved) s.factorize_and_solve(t);
   if (projected) {
     ++s.stats.projected;
-  } else {
+  } else if (!s.system.space_half_full() || !(projection <= s.system.near_tolerance())) {
     const auto begin = Clock::now();
     s.system.add_to_space(s.x);
     s.stats.solve_ms += ms_since(begin);
