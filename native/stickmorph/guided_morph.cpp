@@ -1,10 +1,12 @@
 // The rigid morph following an as-rigid-as-possible guide; see guided_morph.h.
 #include "stickmorph/guided_morph.h"
 
+#include <Eigen/Dense>
 #include <Eigen/SparseLU>
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <optional>
 #include <utility>
@@ -14,6 +16,7 @@
 #include "stickmorph/frame_certificate.h"
 #include "stickmorph/frame_verification.h"
 #include "stickmorph/internal/barycentric_weights.h"
+#include "stickmorph/internal/compact_lu.h"
 #include "stickmorph/internal/geometry.h"
 #include "stickmorph/internal/morph_topology.h"
 #include "stickmorph/internal/stopwatch.h"
@@ -68,6 +71,8 @@ std::string output_defect(const FigureTriangulation& tri, const StickFigure& sou
   return {};
 }
 
+using LU = SparseLU;  // compact_lu.h
+
 // One linear system x_v - sum_j w_vj x_j = 0 over the rows of some interior
 // nodes, the other nodes known; a fixed sparsity pattern, so the symbolic
 // factorization is done once.
@@ -78,73 +83,93 @@ class ConvexCombinationSystem {
       : topo_(topo), nodes_(std::move(rows)), tolerance_(tolerance) {
     unknown_.assign(topo.nodes, -1);
     for (int r = 0; r < int(nodes_.size()); ++r) unknown_[nodes_[r]] = r;
+    // The pattern is the same in every frame (one row per node, one entry
+    // per unknown neighbour), so it is built once here and each solve only
+    // writes the values through slot_: rebuilding the triplets and calling
+    // setFromTriplets, with their allocations, was about 4% of the blended
+    // frames (perf, spiral at 10^3 vertices). The entries are summed in the
+    // triplets' order, as
+    // setFromTriplets sums duplicates, so the matrix is the same bit for bit.
+    const int m = size();
+    std::vector<Eigen::Triplet<double>> triplets;
+    for (int row = 0; row < m; ++row) {
+      const int v = nodes_[row];
+      triplets.emplace_back(row, row, 0.0);
+      for (int u : topo_.ring[v])
+        if (unknown_[u] >= 0) triplets.emplace_back(row, unknown_[u], 0.0);
+    }
+    a_.resize(m, m);
+    a_.setFromTriplets(triplets.begin(), triplets.end());
+    a_.makeCompressed();
+    auto slot_of = [&](int row, int column) {
+      const int* begin = a_.innerIndexPtr() + a_.outerIndexPtr()[column];
+      const int* end = a_.innerIndexPtr() + a_.outerIndexPtr()[column + 1];
+      return int(std::lower_bound(begin, end, row) - a_.innerIndexPtr());
+    };
+    diagonal_slot_.resize(std::size_t(m));
+    ring_start_.assign(1, 0);
+    for (int row = 0; row < m; ++row) {
+      const int v = nodes_[row];
+      diagonal_slot_[std::size_t(row)] = slot_of(row, row);
+      for (int u : topo_.ring[v]) slot_.push_back(unknown_[u] >= 0 ? slot_of(row, unknown_[u]) : -1);
+      ring_start_.push_back(int(slot_.size()));
+    }
+    b_.resize(m, 2);
+    basis_.resize(m, 2);
   }
   int size() const { return int(nodes_.size()); }
   int node(int row) const { return nodes_[row]; }
 
   /// Solves with the weights weights(v) over topo.ring[v] of every row's
   /// node; `positions` supplies the known nodes and receives the solution.
-  /// An iterative solve starts from the last solution (starting from the
-  /// guide frame instead was measured to converge less often).
+  /// `u`: the morph parameter of the solve, for the warm start (see
+  /// warm_start; starting from the guide frame instead was measured to
+  /// converge less often).
   /// False if the system is singular (never, for positive weights).
   template <class Weights>
-  bool solve(const Weights& weights, std::vector<Vec2>& positions) {
+  bool solve(double u, const Weights& weights, std::vector<Vec2>& positions) {
     if (nodes_.empty()) return true;
     const int m = size();
-    std::vector<Eigen::Triplet<double>> triplets;
-    Eigen::MatrixX2d b = Eigen::MatrixX2d::Zero(m, 2);
+    double* values = a_.valuePtr();
+    std::fill(values, values + a_.nonZeros(), 0.0);
+    b_.setZero();
     for (int row = 0; row < m; ++row) {
       const int v = nodes_[row];
       const std::vector<double>& w = weights(v);
-      triplets.emplace_back(row, row, 1.0);
+      const int* slot = slot_.data() + ring_start_[std::size_t(row)];
+      values[diagonal_slot_[std::size_t(row)]] += 1.0;
       for (std::size_t j = 0; j < w.size(); ++j) {
-        const int u = topo_.ring[v][j];
-        if (unknown_[u] >= 0) {
-          triplets.emplace_back(row, unknown_[u], -w[j]);
+        if (slot[j] >= 0) {
+          values[slot[j]] += -w[j];
         } else {
-          b(row, 0) += w[j] * positions[u][0];
-          b(row, 1) += w[j] * positions[u][1];
+          const int u = topo_.ring[v][j];
+          b_(row, 0) += w[j] * positions[u][0];
+          b_(row, 1) += w[j] * positions[u][1];
         }
       }
     }
-    a_.resize(m, m);
-    a_.setFromTriplets(triplets.begin(), triplets.end());
-    a_.makeCompressed();
+    const Eigen::MatrixX2d& b = b_;
     if (!analysed_) {
       lu_.analyzePattern(a_);
       analysed_ = true;
     }
     // As MorphSolver does (morph_solver.cpp, where the choice is measured):
-    // consecutive frames' systems differ only a little, so iterative
-    // refinement on the last factorization (the anchor), from the last
-    // solution, converges in a step or two; factorize only when it does
+    // consecutive frames' systems differ only a little, so an iteration
+    // preconditioned with the last factorization (the anchor), from the
+    // warm start, converges in a few steps; factorize only when it does
     // not. The result is never trusted on its own: every frame is checked
     // exactly.
     Eigen::MatrixX2d x;
     bool solved = false;
     // Right after an iteration that did not converge the anchor is too far:
-    // factorize without trying (as MorphSolver does).
-    if (factorized_ && last_.rows() == m && !anchor_too_far_) {
+    // factorize without trying (as MorphSolver does). Measured again with
+    // GMRES (10^3 vertices, 50 frames): trying anyway saves factorizations
+    // (spiral 29 -> 23, rings 13 -> 7) but costs as much in steps, the
+    // frame no cheaper (within the noise of the shared machine).
+    if (factorized_ && !history_.empty() && !anchor_too_far_) {
       const double tolerance = tolerance_ * std::max(b.norm(), 1e-300);
-      x = last_;
-      double previous = std::numeric_limits<double>::infinity();
-      for (int step = 0; step < kAnchorIterations; ++step) {
-        const Eigen::MatrixX2d residual = b - a_ * x;
-        const double norm = residual.norm();
-        if (!std::isfinite(norm)) break;
-        if (norm <= tolerance) {
-          solved = true;
-          break;
-        }
-        // Bail out when, at the rate of the last step, the tolerance is not
-        // reached within the steps left: a factorization is then cheaper.
-        if (step >= 1) {
-          const double rate = norm / previous;
-          if (!(rate < 0.7) || std::log(tolerance / norm) / std::log(rate) > kAnchorIterations - step) break;
-        }
-        previous = norm;
-        x += lu_.solve(residual);
-      }
+      x = warm_start(u, b);
+      solved = gmres(b, x, tolerance);
       anchor_too_far_ = !solved;
     } else {
       anchor_too_far_ = false;
@@ -153,13 +178,137 @@ class ConvexCombinationSystem {
       lu_.factorize(a_);
       factorized_ = lu_.info() == Eigen::Success;
       if (!factorized_) return false;
-      x = lu_.solve(b);
+      factors_ = CompactLU(lu_);
+      x = factors_.solve(b);
       ++factorizations_;
     }
     if (!x.allFinite()) return false;
-    last_ = x;
+    if (history_.size() == kHistory) history_.erase(history_.begin());
+    history_.push_back({u, x});
     for (int row = 0; row < m; ++row) positions[nodes_[row]] = {x(row, 0), x(row, 1)};
     return true;
+  }
+
+  // GMRES on both coordinates, right-preconditioned with the anchor's LU:
+  // each coordinate its own Krylov space, the two preconditioner solves made
+  // as one two-column solve, so a step costs what a step of the iterative
+  // refinement x += LU_a^-1 (b - A x) used before did. `x`: the warm start,
+  // and the solution when true (its true residual at most `tolerance`,
+  // the criterion as before).
+  //
+  // Why not the refinement: the blended system's rows change quickly
+  // wherever a figure vertex's trust or its guide star does, and refinement
+  // on an anchor a frame or two old stopped converging (rate above 0.7):
+  // 53-62 factorizations in the 48 frames of spiral and polygon at 10^3
+  // vertices, about one a frame (two for each failure, see solve). GMRES
+  // converges where refinement diverges and, per step, at least as fast
+  // (measured there: 33 and 28 factorizations; with the warm start and
+  // CompactLU, 29 and 27).
+  bool gmres(const Eigen::MatrixX2d& b, Eigen::MatrixX2d& x, double tolerance) {
+    const int m = size();
+    constexpr int kSteps = kAnchorIterations;
+    // A second cycle only for a residual that the first one's estimate
+    // declared converged but rounding left just above the tolerance.
+    for (int cycle = 0; cycle < 2; ++cycle) {
+      const Eigen::MatrixX2d r = b - a_ * x;
+      const double norm = r.norm();
+      if (!std::isfinite(norm)) return false;
+      if (norm <= tolerance) return true;
+      if (cycle > 0 && !(norm <= 1e3 * tolerance)) return false;
+      bool active[2];
+      double residual[2];
+      for (int c = 0; c < 2; ++c) {
+        Krylov& k = krylov_[c];
+        k.v.resize(m, kSteps + 1);
+        k.z.resize(m, kSteps);
+        k.h.setZero(kSteps + 1, kSteps);
+        k.g.setZero(kSteps + 1);
+        k.cs.resize(kSteps);
+        k.sn.resize(kSteps);
+        k.steps = 0;
+        const double beta = r.col(c).norm();
+        residual[c] = beta;
+        active[c] = beta > 0;
+        if (active[c]) k.v.col(0) = r.col(c) / beta;
+        k.g(0) = beta;
+      }
+      double estimates[kSteps + 1];
+      estimates[0] = norm;
+      bool converged = false;
+      for (int j = 0; j < kSteps && (active[0] || active[1]); ++j) {
+        for (int c = 0; c < 2; ++c) {
+          if (active[c]) {
+            basis_.col(c) = krylov_[c].v.col(j);
+          } else {
+            basis_.col(c).setZero();
+          }
+        }
+        const Eigen::MatrixX2d z = factors_.solve(basis_);
+        const Eigen::MatrixX2d w = a_ * z;
+        for (int c = 0; c < 2; ++c) {
+          if (!active[c]) continue;
+          Krylov& k = krylov_[c];
+          k.z.col(j) = z.col(c);
+          // Arnoldi (modified Gram-Schmidt), then the Givens rotations that
+          // keep H upper triangular and |g(j+1)| the residual's norm.
+          Eigen::VectorXd q = w.col(c);
+          for (int i = 0; i <= j; ++i) {
+            k.h(i, j) = q.dot(k.v.col(i));
+            q -= k.h(i, j) * k.v.col(i);
+          }
+          const double next = q.norm();
+          k.h(j + 1, j) = next;
+          if (next > 0) k.v.col(j + 1) = q / next;
+          for (int i = 0; i < j; ++i) {
+            const double t = k.cs(i) * k.h(i, j) + k.sn(i) * k.h(i + 1, j);
+            k.h(i + 1, j) = -k.sn(i) * k.h(i, j) + k.cs(i) * k.h(i + 1, j);
+            k.h(i, j) = t;
+          }
+          const double d = std::hypot(k.h(j, j), k.h(j + 1, j));
+          k.cs(j) = d > 0 ? k.h(j, j) / d : 1;
+          k.sn(j) = d > 0 ? k.h(j + 1, j) / d : 0;
+          k.h(j, j) = d;
+          k.h(j + 1, j) = 0;
+          k.g(j + 1) = -k.sn(j) * k.g(j);
+          k.g(j) = k.cs(j) * k.g(j);
+          residual[c] = std::abs(k.g(j + 1));
+          k.steps = j + 1;
+          if (!(next > 0) || !(d > 0)) active[c] = false;  // exact in this space, or breakdown
+        }
+        const int steps = j + 1;
+        const double estimate = std::hypot(residual[0], residual[1]);
+        if (!std::isfinite(estimate)) return false;
+        // Half the tolerance, so that the true residual (recomputed below)
+        // passes despite the estimate's rounding.
+        if (estimate <= 0.5 * tolerance) {
+          converged = true;
+          break;
+        }
+        // Bail out when, at the rate of the last two steps, the tolerance is
+        // not reached within the steps left: a factorization is then
+        // cheaper.
+        estimates[steps] = estimate;
+        if (steps >= 2) {
+          const double rate = std::sqrt(estimate / estimates[steps - 2]);
+          if (!(rate < 0.8) || std::log(tolerance / estimate) / std::log(rate) > kSteps - steps) break;
+        }
+      }
+      // x += Z y with H y = g, H upper triangular after the rotations.
+      for (int c = 0; c < 2; ++c) {
+        Krylov& k = krylov_[c];
+        const int n = k.steps;
+        if (n == 0) continue;
+        Eigen::VectorXd y = k.g.head(n);
+        for (int i = n - 1; i >= 0; --i) {
+          for (int l = i + 1; l < n; ++l) y(i) -= k.h(i, l) * y(l);
+          y(i) /= k.h(i, i);
+        }
+        if (y.allFinite()) x.col(c) += k.z.leftCols(n) * y;
+      }
+      if (!converged) break;
+    }
+    const double final_norm = (b - a_ * x).norm();
+    return std::isfinite(final_norm) && final_norm <= tolerance;
   }
 
   /// Numeric factorizations so far.
@@ -171,13 +320,82 @@ class ConvexCombinationSystem {
   std::vector<int> nodes_;
   const double tolerance_;
   std::vector<int> unknown_;
-  SparseMatrix a_;
+  SparseMatrix a_;                  // the fixed pattern; values rewritten by each solve
+  std::vector<int> diagonal_slot_;  // row -> index of its diagonal in a_'s values
+  std::vector<int> ring_start_;     // row -> its first entry in slot_
+  std::vector<int> slot_;           // per row and ring neighbour: index in a_'s values, or -1 (known)
+  Eigen::MatrixX2d b_;
   bool analysed_ = false;
   bool factorized_ = false;
   bool anchor_too_far_ = false;  // the last iteration did not converge
   int factorizations_ = 0;
-  Eigen::MatrixX2d last_;  // the last solution: the next warm start
-  Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
+  // The latest solutions (oldest first) and their parameters u: the warm
+  // starts.
+  struct Solution {
+    double u;
+    Eigen::MatrixX2d x;
+  };
+  static constexpr std::size_t kHistory = 6;
+  std::vector<Solution> history_;
+  struct Krylov {
+    Eigen::MatrixXd v, z, h;    // the basis, its preconditioned images, the Hessenberg matrix
+    Eigen::VectorXd g, cs, sn;  // the rotated right-hand side and the Givens rotations
+    int steps = 0;
+  };
+  Krylov krylov_[2];        // gmres's, per coordinate
+  Eigen::MatrixX2d basis_;  // gmres's: the latest basis vector of each
+
+  // The start of the iteration at u: whichever has the least residual of
+  // the last solution, the linear and the quadratic extrapolation in u
+  // through the last two and three (Lagrange), and the least-squares
+  // solution over the span of the kept ones (both coordinates of each; six
+  // solutions, twelve columns: twelve products with A and a small QR, a
+  // fraction of one preconditioner solve). Measured at 10^3 vertices, 50
+  // frames: the Steiner system (linear in u) starts 10^2 to 10^3 times
+  // closer than from the last solution and then converges in 1-5 steps
+  // instead of 10-15 (polygon, 624 Steiner vertices); the blended system
+  // only 5 to 10 times closer (its weights follow the trust, which has
+  // kinks), about a step saved.
+  Eigen::MatrixX2d warm_start(double u, const Eigen::MatrixX2d& b) const {
+    const std::size_t h = history_.size();
+    Eigen::MatrixX2d best = history_.back().x;
+    double best_norm = (b - a_ * best).norm();
+    auto consider = [&](Eigen::MatrixX2d candidate) {
+      const double norm = (b - a_ * candidate).norm();
+      if (norm < best_norm) {
+        best_norm = norm;
+        best = std::move(candidate);
+      }
+    };
+    const auto distinct = [](double p, double q) { return p != q; };
+    if (h >= 2) {
+      const Solution& p = history_[h - 2];
+      const Solution& q = history_[h - 1];
+      if (distinct(p.u, q.u)) consider(q.x + ((u - q.u) / (q.u - p.u)) * (q.x - p.x));
+    }
+    if (h >= 3) {
+      const Solution& p = history_[h - 3];
+      const Solution& q = history_[h - 2];
+      const Solution& r = history_[h - 1];
+      if (distinct(p.u, q.u) && distinct(p.u, r.u) && distinct(q.u, r.u)) {
+        const double lp = (u - q.u) * (u - r.u) / ((p.u - q.u) * (p.u - r.u));
+        const double lq = (u - p.u) * (u - r.u) / ((q.u - p.u) * (q.u - r.u));
+        const double lr = (u - p.u) * (u - q.u) / ((r.u - p.u) * (r.u - q.u));
+        consider(lp * p.x + lq * q.x + lr * r.x);
+      }
+    }
+    if (h >= 3) {
+      Eigen::MatrixXd basis(size(), 2 * int(h));
+      for (std::size_t i = 0; i < h; ++i) basis.middleCols(2 * int(i), 2) = history_[i].x;
+      const Eigen::MatrixXd images = a_ * basis;
+      const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(images);
+      const Eigen::MatrixXd y = qr.solve(b);
+      if (y.allFinite()) consider(basis * y);
+    }
+    return best;
+  }
+  LU lu_;
+  CompactLU factors_;  // lu_ as plain columns, for the solves
 };
 
 }  // namespace
@@ -201,7 +419,11 @@ struct GuidedMorph::State {
         // The blended frame is the solution of [17]'s system, to the ten
         // digits of MorphSolver.
         steiner_system(topo, steiner_rows(tri), 1e-9),
-        full_system(topo, topo.interior_nodes, 1e-10) {}
+        full_system(topo, topo.interior_nodes, 1e-10) {
+    std::size_t largest = 0;
+    for (const std::vector<int>& ring : topo.ring) largest = std::max(largest, ring.size());
+    corner_scratch.resize(largest);
+  }
 
   static std::vector<int> steiner_rows(const FigureTriangulation& tri) {
     std::vector<int> rows;
@@ -223,11 +445,13 @@ struct GuidedMorph::State {
   ConvexCombinationSystem steiner_system;
   ConvexCombinationSystem full_system;
   std::vector<double> full_trust_margin;  // per figure vertex, see trust()
+  mutable std::vector<double> corner_scratch;  // star_margin's, one per neighbour of the largest ring
   // sample_guide(): the sampled parameters u_j, trust() of every figure
   // vertex there (for smoothing it over time, trust_at), and the morph's own
   // cumulative motion there if it leaves the guide (else empty).
   std::vector<double> sample_u;
   std::vector<std::vector<float>> trust_samples;
+  std::vector<char> sampled_below_one;  // per figure vertex: some trust_samples below 1 (empty: not known yet)
   std::vector<double> own_motion;
   std::optional<MorphSolver> fallback;  // [8] itself, made on first need
   GuidedMorphStats stats;
@@ -249,8 +473,8 @@ struct GuidedMorph::State {
     std::vector<Vec2> g = tri.source;  // the enclosure is fixed
     std::copy(figure.begin(), figure.end(), g.begin());
     // The Steiner nodes' values in g are not a warm start: the system
-    // iterates from its own last solution.
-    if (!steiner_system.solve([&](int v) -> const std::vector<double>& { return wt[v]; }, g))
+    // iterates from its own (warm_start).
+    if (!steiner_system.solve(u, [&](int v) -> const std::vector<double>& { return wt[v]; }, g))
       throw VerificationError("the rigid morph's Steiner system at u = " + format_double(u) + " is singular");
     return g;
   }
@@ -258,20 +482,63 @@ struct GuidedMorph::State {
   // The sine of the smallest corner angle at v of its star in p, or 0 if
   // the star is not valid there (a corner not strictly positive, or
   // positive corners winding more than once).
+  //
+  // This runs for every figure vertex in every frame, and was most of an
+  // exact frame at 10^3 vertices (perf over the frames of tree: the atan2 of
+  // every corner a third; with it gone, the two hypot per corner still 29%
+  // and the loop itself 28%), so two shortcuts that leave the value as it
+  // was, bit for bit:
+  //  - the winding is counted, not summed: with every corner strictly
+  //    positive and less than a half turn, the corners wind k times round v
+  //    exactly when k of them (taken half-open, (a, b]) contain the direction
+  //    of the first neighbour, the last one always. Two sign tests per
+  //    corner; their products are those of the corner tests with the
+  //    factors swapped, so the signs agree with them.
+  //  - the smallest sine is found on the squared sine cross^2 / (|a|^2 |b|^2)
+  //    (no root), and only the corners within 1e-12 of the smallest (or
+  //    whose squares leave the normal range) get the exact formula
+  //    cross / (hypot(a) hypot(b)); the two differ by a few ulps, so the
+  //    smallest is among those.
   double star_margin(const std::vector<Vec2>& p, int v) const {
     const std::vector<int>& ring = topo.ring[v];
-    double smallest_sine = 1, turn = 0;
-    for (std::size_t j = 0; j < ring.size(); ++j) {
-      const Vec2& a = p[ring[j]];
-      const Vec2& b = p[ring[(j + 1) % ring.size()]];
-      const double ax = a[0] - p[v][0], ay = a[1] - p[v][1], bx = b[0] - p[v][0], by = b[1] - p[v][1];
-      const double cross = ax * by - ay * bx, dot = ax * bx + ay * by;
-      const double la = std::hypot(ax, ay), lb = std::hypot(bx, by);
-      if (!(cross > 0) || !(la > 0) || !(lb > 0)) return 0;
-      smallest_sine = std::min(smallest_sine, cross / (la * lb));
-      turn += std::atan2(cross, dot);
+    const std::size_t d = ring.size();
+    const double cx = p[v][0], cy = p[v][1];
+    const double fx = p[ring[0]][0] - cx, fy = p[ring[0]][1] - cy;
+    double ax = fx, ay = fy, la2 = ax * ax + ay * ay;
+    if (!(ax != 0 || ay != 0)) return 0;
+    // Squared sine of every corner (or -1: take it exactly).
+    double* squared = corner_scratch.data();
+    double least = std::numeric_limits<double>::infinity();
+    int windings = 0;
+    for (std::size_t j = 0; j < d; ++j) {
+      const Vec2& b = p[ring[(j + 1) % d]];
+      const double bx = b[0] - cx, by = b[1] - cy;
+      const double cross = ax * by - ay * bx;
+      if (!(cross > 0) || !(bx != 0 || by != 0)) return 0;
+      const double lb2 = bx * bx + by * by, norms = la2 * lb2, cross2 = cross * cross;
+      const double q = cross2 / norms;
+      constexpr double kNormal = std::numeric_limits<double>::min();
+      if (norms >= kNormal && cross2 >= kNormal && std::isfinite(norms) && std::isfinite(q)) {
+        squared[j] = q;
+        least = std::min(least, q);
+      } else {
+        squared[j] = -1;
+      }
+      if (j + 1 == d || (j > 0 && ax * fy - ay * fx > 0 && fx * by - fy * bx >= 0)) ++windings;
+      ax = bx;
+      ay = by;
+      la2 = lb2;
     }
-    if (std::abs(turn - 2 * internal::kPi) > 1e-6) return 0;
+    if (windings != 1) return 0;
+    double smallest_sine = 1;
+    const double bound = least * (1 + 1e-12);
+    for (std::size_t j = 0; j < d; ++j) {
+      if (!(squared[j] <= bound) && squared[j] >= 0) continue;
+      const Vec2& a = p[ring[j]];
+      const Vec2& b = p[ring[(j + 1) % d]];
+      const double ax = a[0] - cx, ay = a[1] - cy, bx = b[0] - cx, by = b[1] - cy;
+      smallest_sine = std::min(smallest_sine, (ax * by - ay * bx) / (std::hypot(ax, ay) * std::hypot(bx, by)));
+    }
     return smallest_sine;
   }
 
@@ -292,8 +559,12 @@ struct GuidedMorph::State {
   // invalid a little later already hands its weights over gradually, so a
   // guide that folds quickly (a stroke swinging through another) does not
   // make the morph jump in one frame.
+  //
+  // A vertex trusted fully at every sample (most of them) is bounded only
+  // by trust() <= 1, so its samples are not walked (sample_guide notes which).
   double trust_at(const std::vector<Vec2>& g, double u, int v) const {
     double a = trust(g, v);
+    if (a <= 1 && !sampled_below_one.empty() && !sampled_below_one[std::size_t(v)]) return a;
     for (int j = 0; j <= kTrustSamples && a > 0; ++j)
       a = std::min(a, double(trust_samples[j][v]) + std::abs(u - sample_u[j]) / kTrustRamp);
     return a;
@@ -318,6 +589,10 @@ struct GuidedMorph::State {
       guide_frames[j] = guide_frame(sample_u[j]);
       for (int v = 0; v < n; ++v) trust_samples[j][v] = float(trust(guide_frames[j], v));
     }
+    sampled_below_one.assign(std::size_t(n), 0);
+    for (int j = 0; j <= kTrustSamples; ++j)
+      for (int v = 0; v < n; ++v)
+        if (!(trust_samples[j][v] >= 1.0f)) sampled_below_one[std::size_t(v)] = 1;
     std::vector<std::vector<Vec2>> figure(kTrustSamples + 1);
     figure[0].assign(tri.source.begin(), tri.source.begin() + n);
     figure[kTrustSamples] = similarity.apply(1.0, std::vector<Vec2>(tri.target.begin(), tri.target.begin() + n));
@@ -401,7 +676,7 @@ struct GuidedMorph::State {
     }
     std::vector<Vec2> x = tri.source;
     const bool ok = full_system.solve(
-        [&](int v) -> const std::vector<double>& { return v < tri.figure_vertices ? mixed[v] : wt[v]; }, x);
+        u, [&](int v) -> const std::vector<double>& { return v < tri.figure_vertices ? mixed[v] : wt[v]; }, x);
     if (!ok) throw VerificationError("the rigid morph's blended system is singular");
     return x;
   }
