@@ -263,7 +263,7 @@ class MorphSystem {
     x.noalias() = space_.leftCols(k_) * y;
     return x.allFinite();
   }
-  /// Adds both coordinates of the solution x at time t to the space (what
+  /// Adds both coordinates of the solution x to the space (what
   /// is new in them, orthonormalized twice; nothing if it is already in the
   /// space to rounding, or the space is full). A full space keeps what it
   /// has: a window over the latest solutions (what this replaced) forgot the
@@ -312,6 +312,8 @@ class MorphSystem {
     }
   }
 
+  /// Past half the capacity, a frame projected near the tolerance no longer
+  /// adds its solution (near_tolerance).
   bool space_half_full() const { return 2 * k_ >= capacity_; }
   /// Columns of the space (two per solution, at most capacity_).
   int space_size() const { return int(k_); }
