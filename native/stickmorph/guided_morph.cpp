@@ -17,8 +17,8 @@
 #include "stickmorph/frame_verification.h"
 #include "stickmorph/internal/barycentric_weights.h"
 #include "stickmorph/internal/compact_lu.h"
-#include "stickmorph/internal/geometry.h"
 #include "stickmorph/internal/morph_topology.h"
+#include "stickmorph/internal/preconditioned_gmres.h"
 #include "stickmorph/internal/stopwatch.h"
 #include "stickmorph/morph_solver.h"
 
@@ -115,7 +115,6 @@ class ConvexCombinationSystem {
       ring_start_.push_back(int(slot_.size()));
     }
     b_.resize(m, 2);
-    basis_.resize(m, 2);
   }
   int size() const { return int(nodes_.size()); }
   int node(int row) const { return nodes_[row]; }
@@ -169,7 +168,7 @@ class ConvexCombinationSystem {
     if (factorized_ && !history_.empty() && !anchor_too_far_) {
       const double tolerance = tolerance_ * std::max(b.norm(), 1e-300);
       x = warm_start(u, b);
-      solved = gmres(b, x, tolerance);
+      solved = preconditioned_gmres(a_, factors_, b, x, tolerance, kAnchorIterations, gmres_);
       anchor_too_far_ = !solved;
     } else {
       anchor_too_far_ = false;
@@ -189,127 +188,16 @@ class ConvexCombinationSystem {
     return true;
   }
 
-  // GMRES on both coordinates, right-preconditioned with the anchor's LU:
-  // each coordinate its own Krylov space, the two preconditioner solves made
-  // as one two-column solve, so a step costs what a step of the iterative
-  // refinement x += LU_a^-1 (b - A x) used before did. `x`: the warm start,
-  // and the solution when true (its true residual at most `tolerance`,
-  // the criterion as before).
-  //
-  // Why not the refinement: the blended system's rows change quickly
-  // wherever a figure vertex's trust or its guide star does, and refinement
-  // on an anchor a frame or two old stopped converging (rate above 0.7):
-  // 53-62 factorizations in the 48 frames of spiral and polygon at 10^3
-  // vertices, about one a frame (two for each failure, see solve). GMRES
-  // converges where refinement diverges and, per step, at least as fast
-  // (measured there: 33 and 28 factorizations; with the warm start and
-  // CompactLU, 29 and 27).
-  bool gmres(const Eigen::MatrixX2d& b, Eigen::MatrixX2d& x, double tolerance) {
-    const int m = size();
-    constexpr int kSteps = kAnchorIterations;
-    // A second cycle only for a residual that the first one's estimate
-    // declared converged but rounding left just above the tolerance.
-    for (int cycle = 0; cycle < 2; ++cycle) {
-      const Eigen::MatrixX2d r = b - a_ * x;
-      const double norm = r.norm();
-      if (!std::isfinite(norm)) return false;
-      if (norm <= tolerance) return true;
-      if (cycle > 0 && !(norm <= 1e3 * tolerance)) return false;
-      bool active[2];
-      double residual[2];
-      for (int c = 0; c < 2; ++c) {
-        Krylov& k = krylov_[c];
-        k.v.resize(m, kSteps + 1);
-        k.z.resize(m, kSteps);
-        k.h.setZero(kSteps + 1, kSteps);
-        k.g.setZero(kSteps + 1);
-        k.cs.resize(kSteps);
-        k.sn.resize(kSteps);
-        k.steps = 0;
-        const double beta = r.col(c).norm();
-        residual[c] = beta;
-        active[c] = beta > 0;
-        if (active[c]) k.v.col(0) = r.col(c) / beta;
-        k.g(0) = beta;
-      }
-      double estimates[kSteps + 1];
-      estimates[0] = norm;
-      bool converged = false;
-      for (int j = 0; j < kSteps && (active[0] || active[1]); ++j) {
-        for (int c = 0; c < 2; ++c) {
-          if (active[c]) {
-            basis_.col(c) = krylov_[c].v.col(j);
-          } else {
-            basis_.col(c).setZero();
-          }
-        }
-        const Eigen::MatrixX2d z = factors_.solve(basis_);
-        const Eigen::MatrixX2d w = a_ * z;
-        for (int c = 0; c < 2; ++c) {
-          if (!active[c]) continue;
-          Krylov& k = krylov_[c];
-          k.z.col(j) = z.col(c);
-          // Arnoldi (modified Gram-Schmidt), then the Givens rotations that
-          // keep H upper triangular and |g(j+1)| the residual's norm.
-          Eigen::VectorXd q = w.col(c);
-          for (int i = 0; i <= j; ++i) {
-            k.h(i, j) = q.dot(k.v.col(i));
-            q -= k.h(i, j) * k.v.col(i);
-          }
-          const double next = q.norm();
-          k.h(j + 1, j) = next;
-          if (next > 0) k.v.col(j + 1) = q / next;
-          for (int i = 0; i < j; ++i) {
-            const double t = k.cs(i) * k.h(i, j) + k.sn(i) * k.h(i + 1, j);
-            k.h(i + 1, j) = -k.sn(i) * k.h(i, j) + k.cs(i) * k.h(i + 1, j);
-            k.h(i, j) = t;
-          }
-          const double d = std::hypot(k.h(j, j), k.h(j + 1, j));
-          k.cs(j) = d > 0 ? k.h(j, j) / d : 1;
-          k.sn(j) = d > 0 ? k.h(j + 1, j) / d : 0;
-          k.h(j, j) = d;
-          k.h(j + 1, j) = 0;
-          k.g(j + 1) = -k.sn(j) * k.g(j);
-          k.g(j) = k.cs(j) * k.g(j);
-          residual[c] = std::abs(k.g(j + 1));
-          k.steps = j + 1;
-          if (!(next > 0) || !(d > 0)) active[c] = false;  // exact in this space, or breakdown
-        }
-        const int steps = j + 1;
-        const double estimate = std::hypot(residual[0], residual[1]);
-        if (!std::isfinite(estimate)) return false;
-        // Half the tolerance, so that the true residual (recomputed below)
-        // passes despite the estimate's rounding.
-        if (estimate <= 0.5 * tolerance) {
-          converged = true;
-          break;
-        }
-        // Bail out when, at the rate of the last two steps, the tolerance is
-        // not reached within the steps left: a factorization is then
-        // cheaper.
-        estimates[steps] = estimate;
-        if (steps >= 2) {
-          const double rate = std::sqrt(estimate / estimates[steps - 2]);
-          if (!(rate < 0.8) || std::log(tolerance / estimate) / std::log(rate) > kSteps - steps) break;
-        }
-      }
-      // x += Z y with H y = g, H upper triangular after the rotations.
-      for (int c = 0; c < 2; ++c) {
-        Krylov& k = krylov_[c];
-        const int n = k.steps;
-        if (n == 0) continue;
-        Eigen::VectorXd y = k.g.head(n);
-        for (int i = n - 1; i >= 0; --i) {
-          for (int l = i + 1; l < n; ++l) y(i) -= k.h(i, l) * y(l);
-          y(i) /= k.h(i, i);
-        }
-        if (y.allFinite()) x.col(c) += k.z.leftCols(n) * y;
-      }
-      if (!converged) break;
-    }
-    const double final_norm = (b - a_ * x).norm();
-    return std::isfinite(final_norm) && final_norm <= tolerance;
-  }
+  // The iteration is GMRES right-preconditioned with the anchor's LU
+  // (preconditioned_gmres.h). Why not the iterative refinement used
+  // before: the blended system's rows change quickly wherever a figure
+  // vertex's trust or its guide star does, and refinement on an anchor a
+  // frame or two old stopped converging (rate above 0.7): 53-62
+  // factorizations in the 48 frames of spiral and polygon at 10^3 vertices,
+  // about one a frame (two for each failure, see solve). GMRES converges
+  // where refinement diverges and, per step, at least as fast (measured
+  // there: 33 and 28 factorizations; with the warm start and CompactLU, 29
+  // and 27).
 
   /// Numeric factorizations so far.
   int factorizations() const { return factorizations_; }
@@ -337,13 +225,7 @@ class ConvexCombinationSystem {
   };
   static constexpr std::size_t kHistory = 6;
   std::vector<Solution> history_;
-  struct Krylov {
-    Eigen::MatrixXd v, z, h;    // the basis, its preconditioned images, the Hessenberg matrix
-    Eigen::VectorXd g, cs, sn;  // the rotated right-hand side and the Givens rotations
-    int steps = 0;
-  };
-  Krylov krylov_[2];        // gmres's, per coordinate
-  Eigen::MatrixX2d basis_;  // gmres's: the latest basis vector of each
+  GmresWorkspace gmres_;  // preconditioned_gmres's storage
 
   // The start of the iteration at u: whichever has the least residual of
   // the last solution, the linear and the quadratic extrapolation in u

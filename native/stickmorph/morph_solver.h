@@ -13,14 +13,16 @@
 // from a triangulation and a weight kind (the weights, the two endpoint
 // matrices on one sparsity pattern, their symbolic factorization), then
 // solve(t) for any t in [0, 1], in any order, e.g. for scrubbing through a
-// morph. Consecutive solves at nearby times are cheap: each is first
-// projected onto the space of earlier solutions (a reduced basis: x(t) is
-// analytic in t, so a few dozen solutions span the others to many digits),
-// taken as it is when its residual is small enough; otherwise it iterates
-// on the LU factorization nearest in time (an anchor; several are kept for
-// scrubbing back and forth) from the best warm start (that projection, the
-// polynomial through the latest solutions, or the nearest one), and
-// factorizes anew only when that anchor is too far.
+// morph. The first solve builds a reduced basis for all of [0, 1] (the
+// moment space: factorizations at t = 0, 1/2 and 1, and at each the
+// solution's first derivatives in t); every solve is then first projected
+// onto that space and the earlier solutions (x(t) is analytic in t, so a
+// few dozen vectors span it to many digits), taken as it is when its
+// residual is small enough; otherwise GMRES preconditioned by the LU
+// factorization nearest in time (an anchor) starts from the best warm
+// start (that projection, the polynomial through the latest solutions, or
+// the nearest one), and the solver factorizes anew only when that anchor
+// is too far.
 #pragma once
 
 #include <memory>
@@ -33,11 +35,11 @@ namespace stickmorph {
 
 /// What a MorphSolver spent, accumulated over its life.
 struct MorphSolverStats {
-  double factorize_ms = 0;  ///< numeric LU factorizations (and blending the matrix for them)
+  double factorize_ms = 0;  ///< numeric LU factorizations (and blending the matrix for them), the moment space
   double solve_ms = 0;      ///< iterations on the anchor, triangular solves, long double refinement
   int factorizations = 0;   ///< numeric LU factorizations
   int solves = 0;           ///< solve() and solve_directly() calls that returned
-  int iterations = 0;       ///< refinement steps on an anchor (one pair of triangular solves each)
+  int iterations = 0;       ///< GMRES steps on an anchor (one pair of triangular solves each)
   int projected = 0;        ///< solve() calls answered by the space of earlier solutions, no triangular solve
 };
 
@@ -56,10 +58,10 @@ class MorphSolver {
   int unknowns() const;
 
   /// All node positions at time t in [0, 1] (the enclosure's fixed). The
-  /// first call factorizes at t; later calls project onto the earlier
-  /// solutions, then if needed iterate on the nearest kept factorization,
-  /// and factorize at t when the iteration does not converge within a few
-  /// steps. The result depends only on the sequence of times asked (and
+  /// first call builds the moment space (three factorizations, whatever t);
+  /// every call projects onto the space, then if needed iterates on the
+  /// nearest kept factorization, and factorizes at t when the iteration
+  /// does not converge within a few steps. The result depends only on the sequence of times asked (and
   /// solve_directly calls) since construction, so two new solvers given the
   /// same times agree bit for bit; a time among the last three solved gives
   /// the same positions again. Positions to about ten digits of the
@@ -84,7 +86,9 @@ class MorphSolver {
   /// @throws InvalidArgumentError if nothing was solved yet.
   std::vector<Vec2> refine(int rounds);
 
-  /// Whether the last solve() or solve_directly() factorized.
+  /// Whether the last solve() or solve_directly() factorized at its own
+  /// time, so that its result is the direct solution there (the moment
+  /// space's factorizations, at other times, do not count).
   bool last_solve_factorized() const;
 
   const MorphSolverStats& stats() const;
