@@ -342,8 +342,10 @@ void bind_morph(py::module_& m) {
 MorphSolver(triangulation, edges, weights="mvc") computes the
 convex-combination weights of both embeddings and analyses the linear
 system once; solve(t) then gives the figure at any t in [0, 1], in any
-order. Nearby times are cheap: each solve iterates on the factorization of
-a nearby time from the previous solution, and factorizes anew only when
+order. The first solve builds a reduced basis for all of [0, 1] (three
+factorizations, at t = 0, 1/2 and 1, and the solution's derivatives in t
+there); every solve is projected onto it, iterates on the nearest kept
+factorization where that is not enough, and factorizes anew only when
 that is too far. The same solver and per-frame check as morph(), which
 solves its frames in order with one such solver.
 

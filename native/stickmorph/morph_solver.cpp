@@ -72,15 +72,18 @@ using LU = SparseLU;  // compact_lu.h
 /// anchor (moment matching) was tried and dropped: accurate only within
 /// about 0.1 of the anchor, and its solves cost more than they saved.
 ///
-/// The moment space (build_moment_space, this change's measurements
-/// there) replaced what bounded a single playback in order, described
-/// next: at 10^3 vertices it projects every frame of five of the seven
-/// benchmark families without a step, and frame / fresh LU went from
-/// 0.18-0.44 to 0.14-0.34 there and from 0.41 to 0.24 on the polygon; on
-/// the spiral (0.44 -> 0.50) it spans too little and its columns make every
-/// later projection dearer. The anchors' iteration is GMRES
-/// (preconditioned_gmres.h) rather than refinement: 10 factorizations
-/// instead of 13 on the spiral, 6 instead of 11 on the polygon.
+/// The moment space (build_moment_space, with its measurements) replaced
+/// what bounded a single playback in order, described next: at 10^3
+/// vertices it projects every frame of five of the seven benchmark
+/// families without a step. With one space per coordinate (a quarter of
+/// the projection's cost, half the setup's), frame / fresh LU went from
+/// 0.18-0.44 to 0.11-0.26 there, from 0.41 to 0.21 on the polygon and from
+/// 0.44 to 0.40 on the spiral (whose solution the moments span least); in
+/// the five, about four fifths of a frame is now the setup's three
+/// factorizations and 33 solves, amortised over the 48 frames. The
+/// anchors' iteration is GMRES (preconditioned_gmres.h) rather than
+/// refinement: 10 factorizations instead of 13 on the spiral, 4 instead
+/// of 11 on the polygon.
 ///
 /// What bounded a frame of a single playback in order before (measured at 10^3
 /// vertices, 48 frames): one triangular solve pair costs 0.02 ms and a
@@ -139,7 +142,7 @@ class MorphSystem {
     a_ = a0_;
     lu_.analyzePattern(a_);
     capacity_ = std::max<Eigen::Index>(
-        2, std::min<Eigen::Index>(kMaxSpace, Eigen::Index(kSpaceBudgetBytes / (8.0 * std::max(m, 1)))));
+        1, std::min<Eigen::Index>(kMaxSpace, Eigen::Index(kSpaceBudgetBytes / (16.0 * std::max(m, 1)))));
   }
 
   int unknowns() const { return int(topo_.interior_nodes.size()); }
@@ -243,29 +246,35 @@ class MorphSystem {
   /// Steps after which an anchor counts as too far from the frame.
   static constexpr int kAnchorIterations = 8;
 
-  /// The space of earlier solutions (a reduced basis): x(t) is an analytic
-  /// function of one parameter, so the solutions at a few times span all
-  /// the others to many digits (measured at 10^3 vertices: the singular
-  /// values of 201 solutions over [0, 1] fall below 1e-11 of the first
-  /// after 30 to 70 vectors across the benchmark's families). Both
-  /// coordinates of every solution whose projection was not near the
-  /// tolerance (near_tolerance) join an orthonormal basis V (up to
-  /// capacity_ columns); the Galerkin projection V^T A(t) V y = V^T b(t)
-  /// then costs O(k^3 + m k) per frame, with V^T A0 V, V^T A1 V, V^T b0 and
-  /// V^T b1 kept (A(t) and b(t) blend linearly), far less than a triangular
-  /// solve. Its result is accepted only by its true residual.
+  /// The space of the moments and earlier solutions (a reduced basis): x(t)
+  /// is an analytic function of one parameter, so the solutions at a few
+  /// times span all the others to many digits (measured at 10^3 vertices:
+  /// the singular values of 201 solutions over [0, 1] fall below 1e-11 of
+  /// the first after 30 to 70 vectors across the benchmark's families).
+  /// Each coordinate of every solution whose projection was not near the
+  /// tolerance (near_tolerance) joins that coordinate's orthonormal basis V
+  /// (up to capacity_ columns); the Galerkin projection V^T A(t) V y =
+  /// V^T b_c(t) then costs O(k^3 + m k) per frame and coordinate, with
+  /// V^T A0 V, V^T A1 V, V^T b0 and V^T b1 kept (A(t) and b(t) blend
+  /// linearly), far less than a triangular solve. Its result is accepted
+  /// only by its true residual.
   bool space_guess(double t, Eigen::MatrixX2d& x) const {
-    if (k_ == 0) return false;
-    const Eigen::MatrixXd g = (1 - t) * g0_.topLeftCorner(k_, k_) + t * g1_.topLeftCorner(k_, k_);
-    const Eigen::MatrixX2d c = (1 - t) * c0_.topRows(k_) + t * c1_.topRows(k_);
-    const Eigen::MatrixX2d y = Eigen::PartialPivLU<Eigen::MatrixXd>(g).solve(c);
-    if (!y.allFinite()) return false;
-    x.noalias() = space_.leftCols(k_) * y;
+    if (space_[0].k == 0 || space_[1].k == 0) return false;
+    x.resize(unknowns(), 2);
+    for (int c = 0; c < 2; ++c) {
+      const Space& sp = space_[c];
+      const Eigen::Index k = sp.k;
+      const Eigen::MatrixXd g = (1 - t) * sp.g0.topLeftCorner(k, k) + t * sp.g1.topLeftCorner(k, k);
+      const Eigen::VectorXd rhs = (1 - t) * sp.c0.head(k) + t * sp.c1.head(k);
+      const Eigen::VectorXd y = Eigen::PartialPivLU<Eigen::MatrixXd>(g).solve(rhs);
+      if (!y.allFinite()) return false;
+      x.col(c).noalias() = sp.v.leftCols(k) * y;
+    }
     return x.allFinite();
   }
-  /// Adds both coordinates of the solution x to the space (what
-  /// is new in them, orthonormalized twice; nothing if it is already in the
-  /// space to rounding, or the space is full). A full space keeps what it
+  /// Adds each coordinate of the solution x to its space (what is new in
+  /// it, orthonormalized twice; nothing if it is already in the space to
+  /// rounding, or the space is full). A full space keeps what it
   /// has: a window over the latest solutions (what this replaced) forgot the
   /// start of a playback, so a scrub after it projected almost nothing, and
   /// dropping columns spread over time lost the directions that later
@@ -276,64 +285,70 @@ class MorphSystem {
   /// orthogonalization and the new row and column of the projected
   /// matrices, O(m k), and no copy of the space (conservativeResize copied
   /// it whole for every column: a third of a frame at 10^3 vertices).
-  void add_to_space(const Eigen::MatrixX2d& x) { add_block_to_space(x); }
+  void add_to_space(const Eigen::MatrixX2d& x) {
+    for (int c = 0; c < 2; ++c) add_block_to_space(c, x.col(c));
+  }
 
-  /// Adds the columns of `block` to the space: what is new in them against
-  /// the space (block Gram-Schmidt, twice), orthonormalized among
-  /// themselves by a Householder QR; a column whose new part is below
+  /// Adds the columns of `block` to coordinate c's space: what is new in
+  /// them against the space (block Gram-Schmidt, twice), orthonormalized
+  /// among themselves by a Householder QR; a column whose new part is below
   /// 1e-12 of its norm is left out (already in the space to rounding), and
   /// columns beyond the capacity. Blocked (matrix-matrix products), so that
   /// the moment space's few dozen columns (build_moment_space) cost about
   /// one pass over them rather than one per column.
-  void add_block_to_space(Eigen::MatrixXd block) {
-    if (space_.cols() == 0) {
-      space_.resize(unknowns(), capacity_);
-      g0_.resize(capacity_, capacity_);
-      g1_.resize(capacity_, capacity_);
-      c0_.resize(capacity_, 2);
-      c1_.resize(capacity_, 2);
+  void add_block_to_space(int c, Eigen::MatrixXd block) {
+    Space& sp = space_[c];
+    if (sp.v.cols() == 0) {
+      sp.v.resize(unknowns(), capacity_);
+      sp.g0.resize(capacity_, capacity_);
+      sp.g1.resize(capacity_, capacity_);
+      sp.c0.resize(capacity_);
+      sp.c1.resize(capacity_);
     }
-    const Eigen::Index room = capacity_ - k_;
+    const Eigen::Index room = capacity_ - sp.k;
     if (room <= 0 || block.cols() == 0) return;
     const Eigen::VectorXd norms0 = block.colwise().norm().transpose();
     if (!block.allFinite()) return;
-    const auto basis = space_.leftCols(k_);
-    if (k_ > 0) block.noalias() -= basis * (basis.transpose() * block);
+    const auto basis = sp.v.leftCols(sp.k);
+    if (sp.k > 0) block.noalias() -= basis * (basis.transpose() * block);
     const Eigen::HouseholderQR<Eigen::MatrixXd> qr(block);
     std::vector<Eigen::Index> kept;
-    for (Eigen::Index c = 0; c < block.cols() && Eigen::Index(kept.size()) < room; ++c)
-      if (norms0(c) > 0 && std::abs(qr.matrixQR()(c, c)) > 1e-12 * norms0(c)) kept.push_back(c);
+    // (R's diagonal has min(m, columns) entries: a system smaller than the
+    // block, as in a figure of a few vertices, spans at most m directions.)
+    const Eigen::Index diagonal = std::min(block.rows(), block.cols());
+    for (Eigen::Index j = 0; j < diagonal && Eigen::Index(kept.size()) < room; ++j)
+      if (norms0(j) > 0 && std::abs(qr.matrixQR()(j, j)) > 1e-12 * norms0(j)) kept.push_back(j);
     if (kept.empty()) return;
     Eigen::MatrixXd q = qr.householderQ() * Eigen::MatrixXd::Identity(block.rows(), block.cols());
     Eigen::MatrixXd chosen(block.rows(), Eigen::Index(kept.size()));
     for (std::size_t i = 0; i < kept.size(); ++i) chosen.col(Eigen::Index(i)) = q.col(kept[i]);
     // Twice is enough (block Gram-Schmidt, BCGS2): a column whose new part
     // was tiny came out of the first QR orthogonal to its block but only
-    // roughly to the space; a second pass and QR restore both.
-    // (Into an empty space the first QR's columns are already orthonormal.)
-    if (k_ > 0) {
+    // roughly to the space; a second pass and QR restore both. (Into an
+    // empty space the first QR's columns are already orthonormal.)
+    if (sp.k > 0) {
       chosen.noalias() -= basis * (basis.transpose() * chosen);
       const Eigen::HouseholderQR<Eigen::MatrixXd> again(chosen);
       q = again.householderQ() * Eigen::MatrixXd::Identity(chosen.rows(), chosen.cols());
     } else {
       q = std::move(chosen);
     }
-    const Eigen::Index k = k_, added = Eigen::Index(kept.size());
-    space_.middleCols(k, added) = q;
-    const auto fresh = space_.middleCols(k, added);
-    const auto all = space_.leftCols(k + added);
+    const Eigen::Index k = sp.k, added = Eigen::Index(kept.size());
+    sp.v.middleCols(k, added) = q;
+    const auto fresh = sp.v.middleCols(k, added);
+    const auto all = sp.v.leftCols(k + added);
     // The new columns and rows of V^T A0 V and V^T A1 V, and of V^T b.
     const Eigen::MatrixXd a0v = a0_ * fresh, a1v = a1_ * fresh;
-    g0_.block(0, k, k + added, added).noalias() = all.transpose() * a0v;
-    g1_.block(0, k, k + added, added).noalias() = all.transpose() * a1v;
+    sp.g0.block(0, k, k + added, added).noalias() = all.transpose() * a0v;
+    sp.g1.block(0, k, k + added, added).noalias() = all.transpose() * a1v;
     if (k > 0) {
       const Eigen::MatrixXd a0tv = a0_.transpose() * fresh, a1tv = a1_.transpose() * fresh;
-      g0_.block(k, 0, added, k).noalias() = (basis.transpose() * a0tv).transpose();
-      g1_.block(k, 0, added, k).noalias() = (basis.transpose() * a1tv).transpose();
+      sp.g0.block(k, 0, added, k).noalias() = (basis.transpose() * a0tv).transpose();
+      sp.g1.block(k, 0, added, k).noalias() = (basis.transpose() * a1tv).transpose();
     }
-    c0_.middleRows(k, added).noalias() = fresh.transpose() * b0_.cast<double>();
-    c1_.middleRows(k, added).noalias() = fresh.transpose() * b1_.cast<double>();
-    k_ += added;
+    sp.c0.segment(k, added).noalias() = fresh.transpose() * b0_.col(c).cast<double>();
+    sp.c1.segment(k, added).noalias() = fresh.transpose() * b1_.col(c).cast<double>();
+    sp.k += added;
   }
 
   /// The moment space: at each of kMomentAnchors times t_a in [0, 1] (a
@@ -346,11 +361,15 @@ class MorphSystem {
   /// rational Krylov reduction of Grimme 1997, "Krylov projection methods
   /// for model reduction", chapter 5), so it interpolates x over all of
   /// [0, 1] rather than extrapolating from the times already played:
-  /// measured at 10^3 vertices (48 frames of 50), every frame of the
-  /// polyline, tree, triangulation, thinned and rings families projected
-  /// within 0.06 of the tolerance, the polygon within 101 times it and the
-  /// spiral (whose solution varies fastest) within 1e8 times it, against
-  /// 40-1e9 times it for the space of earlier solutions in a playback.
+  /// measured at 10^3 vertices (48 frames of 50, one space for both
+  /// coordinates), every frame of the polyline, tree, triangulation,
+  /// thinned and rings families projected within 0.06 of the tolerance,
+  /// the polygon within 101 times it and the spiral (whose solution varies
+  /// fastest) within 1e8 times it, against 40-1e9 times it for the space of
+  /// earlier solutions in a playback; with a space per coordinate the same
+  /// five project every frame, the polygon 30 of 48 and the spiral 15.
+  /// (Two anchors with twelve levels left the triangulation 17 times the
+  /// tolerance short, five with eight cost more columns than they saved.)
   /// Frames that it does not span are iterated on the nearest of the
   /// anchors, and their solutions join the space as before.
   void build_moment_space() {
@@ -358,22 +377,27 @@ class MorphSystem {
     for (int i = 0; i < kMomentAnchors; ++i) {
       const double ta = kMomentAnchors == 1 ? 0.5 : double(i) / (kMomentAnchors - 1);
       if (!factorize(ta)) throw VerificationError("the morph system at t = " + format_double(ta) + " is singular");
-      Eigen::MatrixXd block(unknowns(), 2 * (kMomentLevels + 1));
+      // Column j of coordinate c's block: its j-th derivative.
+      Eigen::MatrixXd blocks[2] = {Eigen::MatrixXd(unknowns(), kMomentLevels + 1),
+                                   Eigen::MatrixXd(unknowns(), kMomentLevels + 1)};
       Eigen::MatrixX2d d = solve();
-      block.leftCols(2) = d;
+      for (int c = 0; c < 2; ++c) blocks[c].col(0) = d.col(c);
       d = lu().solve(Eigen::MatrixX2d(db - (a1_ * d - a0_ * d)));
+      int levels = kMomentLevels;
       for (int level = 1; level <= kMomentLevels; ++level) {
         // Only the direction matters: scaled to unit norm against overflow.
-        const double norm = d.norm();
-        if (!(norm > 0) || !std::isfinite(norm)) {
-          block.conservativeResize(Eigen::NoChange, 2 * level);
+        for (int c = 0; c < 2; ++c) {
+          const double norm = d.col(c).norm();
+          if (norm > 0 && std::isfinite(norm)) d.col(c) /= norm;
+        }
+        if (!d.allFinite()) {
+          levels = level - 1;
           break;
         }
-        d /= norm;
-        block.middleCols(2 * level, 2) = d;
+        for (int c = 0; c < 2; ++c) blocks[c].col(level) = d.col(c);
         if (level < kMomentLevels) d = lu().solve(Eigen::MatrixX2d(a0_ * d - a1_ * d));
       }
-      add_block_to_space(std::move(block));
+      for (int c = 0; c < 2; ++c) add_block_to_space(c, blocks[c].leftCols(levels + 1));
     }
   }
   static constexpr int kMomentAnchors = 3;
@@ -381,12 +405,12 @@ class MorphSystem {
 
   /// Past half the capacity, a frame projected near the tolerance no longer
   /// adds its solution (near_tolerance).
-  bool space_half_full() const { return 2 * k_ >= capacity_; }
-  /// Columns of the space (two per solution, at most capacity_).
-  int space_size() const { return int(k_); }
-  /// The space's capacity: kMaxSpace columns, fewer for a system so large
-  /// that they would take more than kSpaceBudgetBytes.
-  static constexpr Eigen::Index kMaxSpace = 160;
+  bool space_half_full() const { return 2 * std::max(space_[0].k, space_[1].k) >= capacity_; }
+  /// Columns of both coordinates' spaces (at most capacity_ each).
+  int space_size() const { return int(space_[0].k + space_[1].k); }
+  /// Each coordinate space's capacity: kMaxSpace columns, fewer for a
+  /// system so large that both would take more than kSpaceBudgetBytes.
+  static constexpr Eigen::Index kMaxSpace = 80;
   static constexpr double kSpaceBudgetBytes = 64.0 * 1024 * 1024;
 
   /// Interior coordinates in the source embedding: the first warm start.
@@ -448,12 +472,18 @@ class MorphSystem {
   double t_ = 0;
   Eigen::MatrixX2d b_;   // the right-hand side at the prepared time
   double tolerance_ = 0;  // the iteration's residual tolerance there
-  // The space V (its first k_ columns; allocated at capacity_ on first
-  // use), V^T A0 V, V^T A1 V, V^T b0 and V^T b1.
-  Eigen::MatrixXd space_, g0_, g1_;
-  Eigen::MatrixX2d c0_, c1_;
-  Eigen::Index k_ = 0;
-  Eigen::Index capacity_ = 0;
+  // Per coordinate, the space V (its first k columns; allocated at
+  // capacity_ on first use), V^T A0 V, V^T A1 V, V^T b0 and V^T b1 of that
+  // coordinate. (Coordinate c's solution is A(t)^-1 b_c(t): its own
+  // moments span it, and two spaces of k columns cost a quarter of one of
+  // 2k in the projection and half in the setup.)
+  struct Space {
+    Eigen::MatrixXd v, g0, g1;
+    Eigen::VectorXd c0, c1;
+    Eigen::Index k = 0;
+  };
+  Space space_[2];
+  Eigen::Index capacity_ = 0;  // per coordinate
   bool blended_ = false;  // a_ holds the blend at blended_t_
   double blended_t_ = 0;
   /// Factorizations kept, each at its time: a scrub back and forth finds one
