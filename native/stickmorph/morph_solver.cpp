@@ -74,16 +74,16 @@ using LU = SparseLU;  // compact_lu.h
 ///
 /// The moment space (build_moment_space, with its measurements) replaced
 /// what bounded a single playback in order, described next: at 10^3
-/// vertices it projects every frame of five of the seven benchmark
-/// families without a step. With one space per coordinate (a quarter of
-/// the projection's cost, half the setup's), frame / fresh LU went from
-/// 0.18-0.44 to 0.11-0.26 there, from 0.41 to 0.21 on the polygon and from
-/// 0.44 to 0.40 on the spiral (whose solution the moments span least); in
-/// the five, about four fifths of a frame is now the setup's three
-/// factorizations and 33 solves, amortised over the 48 frames. The
-/// anchors' iteration is GMRES (preconditioned_gmres.h) rather than
-/// refinement: 10 factorizations instead of 13 on the spiral, 4 instead
-/// of 11 on the polygon.
+/// vertices it projects every frame (or all but a few) of five of the
+/// seven benchmark families without a step. With one space per coordinate
+/// (a quarter of the projection's cost, half the setup's) and nine levels,
+/// frame / fresh LU went from 0.18-0.44 to 0.10-0.22 there, from 0.41 to
+/// 0.24 on the polygon and from 0.44 to 0.40 on the spiral (whose solution
+/// the moments span least); in the five, about four fifths of a frame is
+/// now the setup's three factorizations and 30 solves, amortised over the
+/// 48 frames. The anchors' iteration is GMRES (preconditioned_gmres.h)
+/// rather than refinement: 10 factorizations instead of 13 on the spiral,
+/// 5 instead of 11 on the polygon.
 ///
 /// What bounded a frame of a single playback in order before (measured at 10^3
 /// vertices, 48 frames): one triangular solve pair costs 0.02 ms and a
@@ -401,7 +401,11 @@ class MorphSystem {
     }
   }
   static constexpr int kMomentAnchors = 3;
-  static constexpr int kMomentLevels = 10;
+  /// Nine, measured at 10^3 vertices against eight and ten (frame / fresh
+  /// LU): eight left the polyline's and the rings' frames short of the
+  /// tolerance (65 and 9 GMRES steps), ten cost more in the setup than it
+  /// gained (polyline 0.20 against 0.17, thinned 0.12 against 0.10).
+  static constexpr int kMomentLevels = 9;
 
   /// Past half the capacity, a frame projected near the tolerance no longer
   /// adds its solution (near_tolerance).
