@@ -550,8 +550,8 @@ struct GuidedMorph::State {
       std::vector<double> guide_weights;
       try {
         guide_weights = node_weights(tri, topo, g, v, WeightKind::MeanValue);
-      } catch (const InternalError&) {
-        continue;  // too close to degenerate for weights: [8]'s own
+      } catch (const VerificationError&) {
+        continue;  // too close to degenerate for weights: [8]'s own (node_weights throws this)
       }
       for (std::size_t j = 0; j < mixed[v].size(); ++j)
         mixed[v][j] = a * guide_weights[j] + (1 - a) * wt[v][j];

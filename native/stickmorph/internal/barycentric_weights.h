@@ -32,8 +32,9 @@ std::vector<double> uniform_weights(const std::vector<Vec2>& q);
 
 /// The weights of interior node v over topo.ring[v] at `positions`,
 /// positive and summing to one (offsets scaled by a power of two, exactly).
-/// @throws InvalidArgumentError (malformed) if the star is too close to
-///         degenerate for positive finite weights.
+/// @throws VerificationError if the star is too close to degenerate for
+///         positive finite weights (a floating-point failure on a star
+///         whose triangles the exact test found positive).
 std::vector<double> node_weights(const FigureTriangulation& tri, const Topology& topo,
                                  const std::vector<Vec2>& positions, int v, WeightKind kind);
 
