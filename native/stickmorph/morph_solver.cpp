@@ -83,7 +83,11 @@ using LU = SparseLU;  // compact_lu.h
 /// now the setup's three factorizations and 30 solves, amortised over the
 /// 48 frames. The anchors' iteration is GMRES (preconditioned_gmres.h)
 /// rather than refinement: 10 factorizations instead of 13 on the spiral,
-/// 5 instead of 11 on the polygon.
+/// 5 instead of 11 on the polygon. Factorizations after the first are
+/// static-pivot refactorizations on the latest anchor's structure
+/// (CompactLU::refactorize; see factorize): the setup's two cost a quarter
+/// of what SparseLU's did, and frame / fresh LU went to 0.09-0.21 in the
+/// five families, 0.19 on the polygon and 0.33 on the spiral.
 ///
 /// What bounded a frame of a single playback in order before (measured at 10^3
 /// vertices, 48 frames): one triangular solve pair costs 0.02 ms and a
@@ -152,11 +156,32 @@ class MorphSystem {
   /// Blends the system to time t and factorizes it. False if singular
   /// (it never is for positive weights: I - W_interior is then an
   /// irreducibly diagonally dominant M-matrix).
-  bool factorize(double t) {
+  ///
+  /// Unless `pivoting`, a factorization after the first is first tried as
+  /// a static-pivot refactorization on the latest anchor's structure
+  /// (CompactLU::refactorize: 0.1-0.6 of SparseLU's numeric factorization
+  /// on factors that fill in sparsely, see refactorization_pays; SparseLU
+  /// repeats its symbolic work and pivot search every time), kept only if
+  /// its solution at t meets the iteration's tolerance; otherwise, and with `pivoting` (solve_directly, which is
+  /// solve_morph_frame bit for bit), SparseLU factorizes.
+  bool factorize(double t, bool pivoting = false) {
     t_ = t;
     blend(t);
-    lu_.factorize(a_);
-    if (lu_.info() != Eigen::Success) return false;
+    std::unique_ptr<CompactLU> factors;
+    if (!pivoting && !anchors_.empty() && anchors_[current_].factors->refactorization_pays()) {
+      factors = std::make_unique<CompactLU>(*anchors_[current_].factors);
+      bool kept = factors->refactorize(a_);
+      if (kept) {
+        const Eigen::MatrixX2d b = rhs().cast<double>();
+        kept = (b - a_ * factors->solve(b)).norm() <= 1e-10 * std::max(b.norm(), 1e-300);
+      }
+      if (!kept) factors.reset();
+    }
+    if (!factors) {
+      lu_.factorize(a_);
+      if (lu_.info() != Eigen::Success) return false;
+      factors = std::make_unique<CompactLU>(lu_);
+    }
     ++factorizations_;
     // A new anchor while there is room, else the least recently used one
     // is replaced.
@@ -172,7 +197,7 @@ class MorphSystem {
     Anchor& anchor = anchors_[slot];
     anchor.t = t;
     anchor.used = ++clock_;
-    anchor.factors = std::make_unique<CompactLU>(lu_);
+    anchor.factors = std::move(factors);
     current_ = slot;
     return true;
   }
@@ -534,9 +559,9 @@ struct MorphSolver::State {
   MorphSolverStats stats;
 
   // The direct factorization of the system at t, into x.
-  void factorize_and_solve(double t) {
+  void factorize_and_solve(double t, bool pivoting = false) {
     auto begin = Clock::now();
-    if (!system.factorize(t))
+    if (!system.factorize(t, pivoting))
       throw VerificationError("the morph system at t = " + format_double(t) + " is singular");
     stats.factorize_ms += ms_since(begin);
     begin = Clock::now();
@@ -688,7 +713,7 @@ std::vector<Vec2> MorphSolver::solve(double t) {
 
 std::vector<Vec2> MorphSolver::solve_directly(double t) {
   check_time(t);
-  state_->factorize_and_solve(t);
+  state_->factorize_and_solve(t, true);
   state_->system.add_to_space(state_->x);
   state_->anchored = true;
   state_->remember(t);

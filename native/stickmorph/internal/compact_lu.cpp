@@ -1,7 +1,10 @@
 // Sparse LU factors as plain compressed columns; see compact_lu.h.
 #include "stickmorph/internal/compact_lu.h"
 
+#include <algorithm>
+#include <cmath>
 #include <type_traits>
+#include <utility>
 
 namespace stickmorph::internal {
 
@@ -37,6 +40,77 @@ CompactLU::CompactLU(const SparseLU& lu) {
     lp_.push_back(int(li_.size()));
     up_.push_back(int(ui_.size()));
   }
+  for (int r : ui_) updates_ += std::size_t(lp_[std::size_t(r) + 1] - lp_[std::size_t(r)]);
+  // Each column of U in increasing row order, the order in which the
+  // left-looking elimination (refactorize) applies L's columns.
+  std::vector<std::pair<int, double>> column;
+  for (int j = 0; j < m; ++j) {
+    const int begin = up_[std::size_t(j)], end = up_[std::size_t(j) + 1];
+    column.clear();
+    for (int k = begin; k < end; ++k) column.emplace_back(ui_[std::size_t(k)], uv_[std::size_t(k)]);
+    std::sort(column.begin(), column.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (int k = begin; k < end; ++k) {
+      ui_[std::size_t(k)] = column[std::size_t(k - begin)].first;
+      uv_[std::size_t(k)] = column[std::size_t(k - begin)].second;
+    }
+  }
+}
+
+bool CompactLU::refactorize(const Eigen::SparseMatrix<double>& a) {
+  const int m = int(pr_.size());
+  if (a.rows() != m || a.cols() != m) return false;
+  if (pc_inverse_.empty()) {
+    pc_inverse_.assign(std::size_t(m), 0);
+    for (int i = 0; i < m; ++i) pc_inverse_[std::size_t(pc_[std::size_t(i)])] = i;
+    work_.assign(std::size_t(m), 0.0);
+    stamp_.assign(std::size_t(m), -1);
+  }
+  // B = P_r A P_c^T = L U, B(pr[i], pc[c]) = A(i, c); column j of B is
+  // column pc^-1(j) of A. Row r is in column j's pattern when stamp_[r] == j.
+  double* x = work_.data();
+  // A failure leaves partial sums behind: clear them for the next call.
+  auto fail = [&] {
+    std::fill(work_.begin(), work_.end(), 0.0);
+    return false;
+  };
+  for (int j = 0; j < m; ++j) {
+    const int ub = up_[std::size_t(j)], ue = up_[std::size_t(j) + 1];
+    const int lb = lp_[std::size_t(j)], le = lp_[std::size_t(j) + 1];
+    for (int k = ub; k < ue; ++k) stamp_[std::size_t(ui_[std::size_t(k)])] = j;
+    for (int k = lb; k < le; ++k) stamp_[std::size_t(li_[std::size_t(k)])] = j;
+    stamp_[std::size_t(j)] = j;
+    const int c = pc_inverse_[std::size_t(j)];
+    double scale = 0;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(a, c); it; ++it) {
+      const int r = pr_[std::size_t(it.row())];
+      if (stamp_[std::size_t(r)] != j) return fail();
+      x[r] = it.value();
+      scale = std::max(scale, std::abs(it.value()));
+    }
+    // U(:, j) by the columns of L to its left, in increasing row order.
+    for (int k = ub; k < ue; ++k) {
+      const int r = ui_[std::size_t(k)];
+      const double value = x[r];
+      uv_[std::size_t(k)] = value;
+      x[r] = 0;
+      if (value == 0) continue;
+      for (int e = lp_[std::size_t(r)]; e < lp_[std::size_t(r) + 1]; ++e) {
+        const int row = li_[std::size_t(e)];
+        if (stamp_[std::size_t(row)] != j) return fail();  // fill outside the pattern
+        x[row] -= lv_[std::size_t(e)] * value;
+      }
+    }
+    const double pivot = x[j];
+    x[j] = 0;
+    if (!std::isfinite(pivot) || !(std::abs(pivot) > 1e-12 * scale)) return fail();
+    ud_[std::size_t(j)] = pivot;
+    for (int k = lb; k < le; ++k) {
+      const int r = li_[std::size_t(k)];
+      lv_[std::size_t(k)] = x[r] / pivot;
+      x[r] = 0;
+    }
+  }
+  return true;
 }
 
 Eigen::MatrixX2d CompactLU::solve(const Eigen::MatrixX2d& b) const {
