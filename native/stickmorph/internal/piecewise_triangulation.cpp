@@ -1,6 +1,7 @@
 // The Improved method's recursion; see piecewise_triangulation.h.
 #include "stickmorph/internal/piecewise_triangulation.h"
 
+#include <algorithm>
 #include <set>
 #include <utility>
 
@@ -21,6 +22,8 @@ namespace {
 constexpr long kDeepAverage = 12;
 constexpr int kRoutedCutMinCorners = 64;
 constexpr double kCutGain = 0.8;
+// Candidates measured exactly per pair (see best_routed_cut).
+constexpr int kMeasuredCuts = 4;
 
 // Glues `piece` into `mesh`: its corner k is mesh node nodes[k] (a corner of
 // the pair, or a bend of a routed cut), its Steiner vertices are appended as
@@ -93,7 +96,24 @@ bool best_routed_cut(const PolygonPair& pair, const std::vector<std::array<int, 
   if (total <= kDeepAverage * n) return false;
   double best = kCutGain * double(total);
   bool found = false;
-  for (RoutedCut& cut : routed_cut_candidates(pair, source_base, target_base)) {
+  // Measuring a cut exactly triangulates both pieces in both polygons, the
+  // bulk of a deep pair's cost: only the kMeasuredCuts candidates whose
+  // pieces are smallest by estimate are measured (one whose rounded bends
+  // leave a piece not weakly simple does not count). A corridor's spiderweb
+  // grows as the square of its corners, so the estimate is the sum of the
+  // squares of the pieces' sizes (corners plus bends).
+  std::vector<RoutedCut> candidates = routed_cut_candidates(pair, source_base, target_base);
+  std::vector<std::pair<double, std::size_t>> order;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const std::array<std::vector<int>, 2> nodes = routed_pieces(n, candidates[i]);
+    const double first = double(nodes[0].size()), second = double(nodes[1].size());
+    order.push_back({first * first + second * second, i});
+  }
+  std::sort(order.begin(), order.end());
+  int measured = 0;
+  for (const auto& [estimate, index] : order) {
+    if (measured == kMeasuredCuts) break;
+    RoutedCut& cut = candidates[index];
     std::array<RoutedPiece, 2> pieces;
     const std::array<std::vector<int>, 2> nodes = routed_pieces(n, cut);
     try {
@@ -101,6 +121,7 @@ bool best_routed_cut(const PolygonPair& pair, const std::vector<std::array<int, 
     } catch (const InvalidFigureError&) {
       continue;  // a rounded bend left a piece not weakly simple
     }
+    ++measured;
     double cost = double(cut.source_bends.size());
     for (const RoutedPiece& piece : pieces)
       if (piece.nodes.size() > 3) cost += double(spiderweb_depth_total(piece.pair, piece.source_base, piece.target_base));

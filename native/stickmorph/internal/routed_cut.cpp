@@ -7,6 +7,7 @@
 #include <set>
 #include <utility>
 
+#include "stickmorph/exact_predicates.h"
 #include "stickmorph/internal/corner_router.h"
 #include "stickmorph/polygon_triangulation.h"
 
@@ -18,6 +19,11 @@ namespace {
 constexpr int kSampledCorners = 32;
 // Cuts of each balance class handed on to be measured exactly.
 constexpr int kCandidatesPerClass = 2;
+// Longest run of sides a straight segment of a cut may skip (DualGraph::bends).
+constexpr int kMaxSkip = 256;
+// A straight segment of a cut crosses each side it skips no nearer than this
+// fraction of the side's length to either end (DualGraph::bends).
+constexpr double kMiddle = 0.25;
 
 // One polygon's triangulation as a dual graph with the faces at each corner.
 struct DualGraph {
@@ -79,15 +85,61 @@ struct DualGraph {
     return out;
   }
 
-  // Midpoints of the sides shared by consecutive faces of `faces`.
-  std::vector<Vec2> bends(const CornerPolygon& polygon, const std::vector<int>& faces) const {
-    std::vector<Vec2> out;
-    for (std::size_t i = 0; i + 1 < faces.size(); ++i) {
-      const int f = faces[i], g = faces[i + 1];
+  // Bends of a path from corner `a` (of faces.front()) to corner `b` (of
+  // faces.back()) through the sleeve of `faces`: midpoints of the sides
+  // shared by consecutive faces, but only those where the path must turn.
+  // A bend is skipped when the straight segment from the last kept point to
+  // a later one crosses every side in between strictly inside it (exact
+  // orientations): that segment then runs through the faces in between, so
+  // it stays inside the polygon and meets no corner, as the unsimplified
+  // path does. In a fan (one far corner facing many), the dual path from a
+  // middle corner out crosses half the fan, but a straight segment does it:
+  // the cut's bends, which both pieces get as corners and the spiderweb as
+  // Steiner vertices, then no longer grow with the fan.
+  std::vector<Vec2> bends(const CornerPolygon& polygon, const std::vector<int>& faces, int a, int b) const {
+    const int sides = int(faces.size()) - 1;
+    std::vector<Vec2> ends[2], mid;
+    for (int i = 0; i < sides; ++i) {
+      const int f = faces[std::size_t(i)], g = faces[std::size_t(i) + 1];
       int j = 0;
       while (pt.neighbour[f][j] != g) ++j;
       const Vec2 p = polygon.at(pt.triangles[f][(j + 1) % 3]), q = polygon.at(pt.triangles[f][(j + 2) % 3]);
-      out.push_back({0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])});
+      ends[0].push_back(p);
+      ends[1].push_back(q);
+      mid.push_back({0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])});
+    }
+    // Point t of the path: corner a (t = 0), the midpoint of side t - 1, or
+    // corner b (t = sides + 1).
+    auto point = [&](int t) { return t == 0 ? polygon.at(a) : t > sides ? polygon.at(b) : mid[std::size_t(t) - 1]; };
+    // The crossing must also lie in the middle part of the side (kMiddle,
+    // in floating point; it only tightens the exact test): a segment that
+    // grazes a corner leaves triangles too thin for the morph's frames.
+    auto crosses = [&](const Vec2& from, const Vec2& to, int side) {
+      const Vec2& p = ends[0][std::size_t(side)];
+      const Vec2& q = ends[1][std::size_t(side)];
+      if (!(orientation(from, to, p) * orientation(from, to, q) < 0 &&
+            orientation(p, q, from) * orientation(p, q, to) < 0))
+        return false;
+      const double dx = to[0] - from[0], dy = to[1] - from[1];
+      const double along = (p[0] - from[0]) * dy - (p[1] - from[1]) * dx;  // distance of p from the line, scaled
+      const double whole = (p[0] - q[0]) * dy - (p[1] - q[1]) * dx;        // of p - q, same scale
+      const double s = along / whole;                                       // crossing point: p + s (q - p)
+      return s >= kMiddle && s <= 1 - kMiddle;
+    };
+    std::vector<Vec2> out;
+    for (int from = 0; from <= sides;) {
+      // The farthest point reachable straight, trying points in order and
+      // stopping at the first that is not (kMaxSkip bounds the quadratic
+      // cost of the test on a long straight sleeve).
+      int reach = from + 1;
+      for (int to = from + 2; to <= sides + 1 && to - from <= kMaxSkip; ++to) {
+        bool straight = true;
+        for (int side = from; side < to - 1 && straight; ++side) straight = crosses(point(from), point(to), side);
+        if (!straight) break;
+        reach = to;
+      }
+      if (reach <= sides) out.push_back(mid[std::size_t(reach) - 1]);
+      from = reach;
     }
     return out;
   }
@@ -175,8 +227,8 @@ std::vector<RoutedCut> routed_cut_candidates(const PolygonPair& pair,
       RoutedCut cut;
       cut.a = x.a;
       cut.b = x.b;
-      cut.source_bends = graphs[0].bends(polygons[0], graphs[0].path(x.a, x.b));
-      cut.target_bends = graphs[1].bends(polygons[1], graphs[1].path(x.a, x.b));
+      cut.source_bends = graphs[0].bends(polygons[0], graphs[0].path(x.a, x.b), x.a, x.b);
+      cut.target_bends = graphs[1].bends(polygons[1], graphs[1].path(x.a, x.b), x.a, x.b);
       const int count = int(std::max(cut.source_bends.size(), cut.target_bends.size()));
       pad_bends(polygons[0].at(cut.a), polygons[0].at(cut.b), cut.source_bends, count);
       pad_bends(polygons[1].at(cut.a), polygons[1].at(cut.b), cut.target_bends, count);

@@ -20,9 +20,14 @@
 //
 // Invariant: in each polygon the path follows a shortest dual path of the
 // polygon's triangulation from a face at corner a to a face at corner b and
-// bends at the midpoints of the diagonals it crosses, so every segment lies
-// inside one triangle and the path meets the boundary only at a and b (the
-// shorter path is padded with straight bends, corner_router.h's pad_bends).
+// bends at midpoints of the diagonals it crosses, only where it must turn: a
+// segment runs on through the next faces as long as it crosses each of
+// their shared diagonals strictly inside it (exact orientations), so it
+// lies inside the faces it passes and the path meets the boundary only at
+// a and b (the shorter path is padded with straight bends, corner_router.h's
+// pad_bends). Bending at every diagonal would make a cut out of a fan (one
+// far corner facing many, as in both polygons of a spiral's exterior face)
+// as long as half the fan, and its bends are corners of both pieces.
 // Rounding of a midpoint is the one inexact step: callers triangulate the
 // pieces (which rejects any piece that is not weakly simple) and the final
 // result is verified exactly.
