@@ -690,6 +690,9 @@ GuidedFrame GuidedMorph::frame(double t, int frame, bool verify, const std::stri
   result.positions = s.similarity.apply(u, plain.positions);
   result.fit = GuideFit::Barycentric;
   defect = defect_of(result.positions);
+  // The similarity's rounding can flip a triangle as thin as those that
+  // checked_morph_frame untangles: the same repair in output space.
+  if (!defect.empty() && untangle_steiner_vertices(s.output, result.positions)) defect = defect_of(result.positions);
   if (!defect.empty()) throw VerificationError(context + defect + " (moved by the rigid morph's similarity)");
   return result;
 }

@@ -15,6 +15,7 @@
 #include "stickmorph/frame_verification.h"
 #include "stickmorph/internal/barycentric_weights.h"
 #include "stickmorph/internal/morph_topology.h"
+#include "stickmorph/internal/rounding_repair.h"
 #include "stickmorph/internal/stopwatch.h"
 #include "stickmorph/morph_solver.h"
 
@@ -103,6 +104,23 @@ std::vector<Vec2> solve_morph_frame(const FigureTriangulation& triangulation, do
   return solver.solve_directly(t);
 }
 
+bool untangle_steiner_vertices(const FigureTriangulation& triangulation, std::vector<Vec2>& positions) {
+  // The exact solution of [8] is an embedding, but a triangle thinner than
+  // the spacing of doubles around it can flip when even the correctly
+  // rounded positions are stored (the 10^4-vertex spiral: a Steiner vertex
+  // next to two figure vertices where the target winds tightest, at 3e-8
+  // degrees). The Steiner vertices are not part of the figure, so moving
+  // one into the kernel of its star (untangle, exact) leaves the figure's
+  // frame as solved and makes the triangulation an embedding again; the
+  // caller checks the frame once more.
+  if (int(positions.size()) != triangulation.node_count()) return false;
+  std::vector<Vec2> repaired = positions;
+  if (!untangle(repaired, triangulation.triangles, triangulation.figure_vertices + triangulation.enclosure_vertices))
+    return false;
+  positions = std::move(repaired);
+  return true;
+}
+
 CheckedFrame checked_morph_frame(MorphSolver& solver, const FigureTriangulation& triangulation,
                                  const StickFigure& source, const Decomposition& source_decomposition,
                                  double t, int frame, bool verify, const std::string& context,
@@ -156,6 +174,7 @@ CheckedFrame checked_morph_frame(MorphSolver& solver, const FigureTriangulation&
     result.positions = solver.refine(kRefinementRounds);
     result.refined = true;
     defect = defect_now();
+    if (!defect.empty() && untangle_steiner_vertices(triangulation, result.positions)) defect = defect_now();
     if (!defect.empty()) defect += " (after refinement in long double)";
   }
   if (!defect.empty()) throw VerificationError(context + defect);

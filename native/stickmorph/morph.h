@@ -144,14 +144,24 @@ struct CheckedFrame {
 /// also verify_frame, the figure rebuilt and found a stick figure compatible
 /// with the source. A frame that fails is solved directly at t, then refined
 /// in long double (rounding can flip a nearly flat triangle that is positive
-/// in exact arithmetic, where the theorem of [8] holds), and only then
-/// refused. `frame` names the frame in messages (frame_label; negative: by
+/// in exact arithmetic, where the theorem of [8] holds), then its Steiner
+/// vertices of inverted triangles are moved into their stars' kernels
+/// (untangle_steiner_vertices), and only then refused. `frame` names the frame in messages (frame_label; negative: by
 /// its time alone); `context` leads every message ("morph: ").
 /// @throws VerificationError "<context><frame label>: <defect>".
 CheckedFrame checked_morph_frame(MorphSolver& solver, const FigureTriangulation& triangulation,
                                  const StickFigure& source, const Decomposition& source_decomposition,
                                  double t, int frame, bool verify, const std::string& context,
                                  FrameCheck check = FrameCheck::Certificate);
+
+/// Moves the Steiner vertices (nodes after the figure and the enclosure)
+/// of inverted triangles of the frame `positions` into the kernels of their
+/// stars, exactly checked (internal/rounding_repair.h's untangle): a frame
+/// whose triangles are thinner than doubles resolve, flipped by rounding
+/// alone. The figure's and the enclosure's positions are not touched. True
+/// (and `positions` changed) iff every triangle is counter-clockwise
+/// afterwards; the caller still checks the frame.
+bool untangle_steiner_vertices(const FigureTriangulation& triangulation, std::vector<Vec2>& positions);
 
 /// The solve of [8] alone at one time t in [0, 1]: all node positions of
 /// (I - W_interior(t)) x = W_boundary(t) x_boundary, without substituting
