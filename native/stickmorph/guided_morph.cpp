@@ -245,55 +245,47 @@ class ConvexCombinationSystem {
   std::vector<Solution> history_;
   GmresWorkspace gmres_;  // preconditioned_gmres's storage
 
-  // The start of the iteration at u: whichever has the least residual of
-  // the last solution, the linear and the quadratic extrapolation in u
-  // through the last two and three (Lagrange), and the least-squares
-  // solution over the span of the kept ones (both coordinates of each; six
-  // solutions, twelve columns: twelve products with A and a small QR, a
-  // fraction of one preconditioner solve). Measured at 10^3 vertices, 50
-  // frames: the Steiner system (linear in u) starts 10^2 to 10^3 times
-  // closer than from the last solution and then converges in 1-5 steps
-  // instead of 10-15 (polygon, 624 Steiner vertices); the blended system
-  // only 5 to 10 times closer (its weights follow the trust, which has
-  // kinks), about a step saved.
+  // The start of the iteration at u: the least-squares solution over the
+  // span of the kept solutions (both coordinates of each; six solutions,
+  // twelve columns: twelve products with A and a small QR, a fraction of
+  // one preconditioner solve), unless the last solution itself has a
+  // smaller residual (a rank-deficient span). With fewer than three kept,
+  // the last one or the linear extrapolation in u through the last two.
+  // Measured at 10^3 vertices, 50 frames: the Steiner system (linear in u)
+  // starts 10^2 to 10^3 times closer than from the last solution and then
+  // converges in 1-5 steps instead of 10-15 (polygon, 624 Steiner
+  // vertices); the blended system only 5 to 10 times closer (its weights
+  // follow the trust, which has kinks), about a step saved.
+  //
+  // The linear and quadratic extrapolations in u through the last two and
+  // three solutions (Lagrange) were candidates too, each costing a product
+  // with A for its residual; but they lie in the span, where the least
+  // squares solution has the least residual of all, column by column, so
+  // they never won. Nor is the least-squares residual a product with A: it
+  // is b minus the images times the coefficients.
   Eigen::MatrixX2d warm_start(double u, const Eigen::MatrixX2d& b) const {
     const std::size_t h = history_.size();
     Eigen::MatrixX2d best = history_.back().x;
     double best_norm = (b - a_ * best).norm();
-    auto consider = [&](Eigen::MatrixX2d candidate) {
-      const double norm = (b - a_ * candidate).norm();
-      if (norm < best_norm) {
-        best_norm = norm;
-        best = std::move(candidate);
-      }
-    };
-    const auto distinct = [](double p, double q) { return p != q; };
-    if (h >= 2) {
-      const Solution& p = history_[h - 2];
-      const Solution& q = history_[h - 1];
-      if (distinct(p.u, q.u)) consider(q.x + ((u - q.u) / (q.u - p.u)) * (q.x - p.x));
-    }
-    if (h >= 3) {
-      const Solution& p = history_[h - 3];
-      const Solution& q = history_[h - 2];
-      const Solution& r = history_[h - 1];
-      if (distinct(p.u, q.u) && distinct(p.u, r.u) && distinct(q.u, r.u)) {
-        const double lp = (u - q.u) * (u - r.u) / ((p.u - q.u) * (p.u - r.u));
-        const double lq = (u - p.u) * (u - r.u) / ((q.u - p.u) * (q.u - r.u));
-        const double lr = (u - p.u) * (u - q.u) / ((r.u - p.u) * (r.u - q.u));
-        consider(lp * p.x + lq * q.x + lr * r.x);
+    if (h == 2) {
+      const Solution& p = history_[0];
+      const Solution& q = history_[1];
+      if (p.u != q.u) {
+        Eigen::MatrixX2d candidate = q.x + ((u - q.u) / (q.u - p.u)) * (q.x - p.x);
+        if ((b - a_ * candidate).norm() < best_norm) best = std::move(candidate);
       }
     }
     if (h >= 3) {
-      Eigen::MatrixXd basis(size(), 2 * int(h));
-      for (std::size_t i = 0; i < h; ++i) basis.middleCols(2 * int(i), 2) = history_[i].x;
-      const Eigen::MatrixXd images = a_ * basis;
-      const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(images);
+      basis_.resize(size(), 2 * int(h));
+      for (std::size_t i = 0; i < h; ++i) basis_.middleCols(2 * int(i), 2) = history_[i].x;
+      images_ = a_ * basis_;
+      const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(images_);
       const Eigen::MatrixXd y = qr.solve(b);
-      if (y.allFinite()) consider(basis * y);
+      if (y.allFinite() && (b - images_ * y).norm() < best_norm) best = basis_ * y;
     }
     return best;
   }
+  mutable Eigen::MatrixXd basis_, images_;  // warm_start's storage
   LU lu_;
   CompactLU factors_;  // lu_ as plain columns, for the solves
 };
@@ -346,6 +338,11 @@ struct GuidedMorph::State {
   ConvexCombinationSystem full_system;
   std::vector<double> full_trust_margin;  // per figure vertex, see trust()
   mutable std::vector<double> corner_scratch;  // star_margin's, one per neighbour of the largest ring
+  // guided_frame's: the blended weights of every figure vertex, and the
+  // offsets and mean value weights of one star.
+  std::vector<std::vector<double>> mixed;
+  std::vector<Vec2> offset_scratch;
+  std::vector<double> weight_scratch;
   // sample_guide(): the sampled parameters u_j, trust() of every figure
   // vertex there (for smoothing it over time, trust_at), and the morph's own
   // cumulative motion there if it leaves the guide (else empty).
@@ -397,8 +394,8 @@ struct GuidedMorph::State {
   //  - the smallest sine is found on the squared sine cross^2 / (|a|^2 |b|^2)
   //    (no root), and only the corners within 1e-12 of the smallest (or
   //    whose squares leave the normal range) get the exact formula
-  //    cross / (hypot(a) hypot(b)); the two differ by a few ulps, so the
-  //    smallest is among those.
+  //    cross / (|a| |b|); the two differ by a few ulps, so the smallest is
+  //    among those.
   double star_margin(const std::vector<Vec2>& p, int v) const {
     const std::vector<int>& ring = topo.ring[v];
     const std::size_t d = ring.size();
@@ -437,7 +434,13 @@ struct GuidedMorph::State {
       const Vec2& a = p[ring[j]];
       const Vec2& b = p[ring[(j + 1) % d]];
       const double ax = a[0] - cx, ay = a[1] - cy, bx = b[0] - cx, by = b[1] - cy;
-      smallest_sine = std::min(smallest_sine, (ax * by - ay * bx) / (std::hypot(ax, ay) * std::hypot(bx, by)));
+      // The root of the product of the squared lengths where that product
+      // is normal (within an ulp or two of the hypot product, and several
+      // times faster: hypot was 3% of a blended frame after the weights'
+      // went), else hypot.
+      const double lengths = squared[j] >= 0 ? std::sqrt((ax * ax + ay * ay) * (bx * bx + by * by))
+                                             : std::hypot(ax, ay) * std::hypot(bx, by);
+      smallest_sine = std::min(smallest_sine, (ax * by - ay * bx) / lengths);
     }
     return smallest_sine;
   }
@@ -560,19 +563,17 @@ struct GuidedMorph::State {
     // triangulation by Tutte's theorem, up to the rounding that the exact
     // check of the output frame catches.
     if (exact) return g;
-    std::vector<std::vector<double>> mixed(tri.figure_vertices);
+    // Into storage kept between frames (mixed, offset_scratch,
+    // weight_scratch): a frame's thousand small allocations were 5% of it.
+    mixed.resize(std::size_t(tri.figure_vertices));
     for (int v = 0; v < tri.figure_vertices; ++v) {
       const double a = trusts[v];
       mixed[v] = wt[v];
       if (a <= 0) continue;
-      std::vector<double> guide_weights;
-      try {
-        guide_weights = node_weights(tri, topo, g, v, WeightKind::MeanValue);
-      } catch (const VerificationError&) {
-        continue;  // too close to degenerate for weights: [8]'s own (node_weights throws this)
-      }
+      // Too close to degenerate for weights: [8]'s own.
+      if (!try_node_weights(topo, g, v, WeightKind::MeanValue, offset_scratch, weight_scratch)) continue;
       for (std::size_t j = 0; j < mixed[v].size(); ++j)
-        mixed[v][j] = a * guide_weights[j] + (1 - a) * wt[v][j];
+        mixed[v][j] = a * weight_scratch[j] + (1 - a) * wt[v][j];
     }
     std::vector<Vec2> x = tri.source;
     const bool ok = full_system.solve(

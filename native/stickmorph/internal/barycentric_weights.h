@@ -24,6 +24,10 @@ namespace stickmorph::internal {
 
 /// Mean value coordinates (Floater 2003).
 std::vector<double> mean_value_weights(const std::vector<Vec2>& q);
+/// The same weights into w (resized to q's size), allocating nothing once
+/// w has the capacity: the rigid morph takes them of every figure vertex in
+/// every blended frame (guided_morph.cpp).
+void mean_value_weights(const std::vector<Vec2>& q, std::vector<double>& w);
 /// Floater's shape-preserving weights (Floater 1997).
 std::vector<double> floater_weights(const std::vector<Vec2>& q);
 /// The weights nearest to 1/deg that reproduce the embedding, blended
@@ -37,5 +41,11 @@ std::vector<double> uniform_weights(const std::vector<Vec2>& q);
 ///         whose triangles the exact test found positive).
 std::vector<double> node_weights(const FigureTriangulation& tri, const Topology& topo,
                                  const std::vector<Vec2>& positions, int v, WeightKind kind);
+
+/// node_weights into w, with q as scratch for the offsets: false instead of
+/// the throw (the weights are then not all positive and finite). Allocates
+/// nothing once q and w have the capacity, for mean value weights.
+bool try_node_weights(const Topology& topo, const std::vector<Vec2>& positions, int v, WeightKind kind,
+                      std::vector<Vec2>& q, std::vector<double>& w);
 
 }  // namespace stickmorph::internal

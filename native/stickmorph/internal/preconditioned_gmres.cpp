@@ -14,7 +14,8 @@ bool preconditioned_gmres(const Eigen::SparseMatrix<double>& a, const CompactLU&
   const int limit = std::max(1, max_steps);
   int solves = 0;
   if (steps_taken) *steps_taken = 0;
-  std::vector<double> estimates(std::size_t(limit) + 1);
+  std::vector<double>& estimates = work.estimates;
+  estimates.assign(std::size_t(limit) + 1, 0.0);
   work.basis.resize(m, 2);
   // A second cycle only for a residual that the first one's estimate
   // declared converged but rounding left just above the tolerance.

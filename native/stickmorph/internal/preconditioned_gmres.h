@@ -21,6 +21,8 @@
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 
+#include <vector>
+
 #include "stickmorph/internal/compact_lu.h"
 
 namespace stickmorph::internal {
@@ -35,6 +37,7 @@ struct GmresWorkspace {
   };
   Krylov krylov[2];        // per coordinate
   Eigen::MatrixX2d basis;  // the latest basis vector of each coordinate
+  std::vector<double> estimates;  // the residual estimate after each step
 };
 
 /// Solves A x = b (#A by 2) by GMRES right-preconditioned with
