@@ -9,6 +9,9 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <functional>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -51,6 +54,17 @@ long node_key(const PolygonPair& pair, int corners, int node);
 /// adds an edge whose key exists would double an edge through repeated
 /// corners, and the result would not be a simplicial complex.
 std::pair<long, long> edge_key(const PolygonPair& pair, int corners, int a, int b);
+
+/// A set of edge_key values. Only membership is ever asked, so a hash set:
+/// std::set's tree walks and node allocations were a tenth of a
+/// 10^3-vertex polygon's triangulation (perf, section 4.2's reduction and
+/// the spiderweb's splits).
+struct EdgeKeyHash {
+  std::size_t operator()(const std::pair<long, long>& key) const noexcept {
+    return std::hash<long>()(key.first) * 0x9E3779B97F4A7C15ull ^ std::hash<long>()(key.second);
+  }
+};
+using EdgeKeySet = std::unordered_set<std::pair<long, long>, EdgeKeyHash>;
 
 /// Smallest angle of every triangle, in the source and in the target.
 double mesh_min_angle(const CompatibleMesh& mesh);

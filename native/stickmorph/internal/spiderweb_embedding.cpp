@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <set>
 
 #include "stickmorph/exact_predicates.h"
 #include "stickmorph/internal/compatible_mesh.h"
@@ -304,7 +303,7 @@ Placement embed_in_both(const PolygonPair& pair, const std::array<PolygonTriangu
 
   // Edges fixed by the triangles without choice, by vertex identity: a split
   // must not double one of them (repeated corners).
-  std::set<std::pair<long, long>> fixed_edges;
+  EdgeKeySet fixed_edges;
   for (const Triangle& t : web.fixed)
     for (int j = 0; j < 3; ++j) fixed_edges.insert(edge_key(pair, web.corners, t[j], t[(j + 1) % 3]));
 
@@ -327,7 +326,7 @@ Placement embed_in_both(const PolygonPair& pair, const std::array<PolygonTriangu
     // larger smallest angle, never doubling an edge; a cell with neither is
     // split by its first diagonal and left to the repair below.
     std::vector<Triangle> triangles = web.fixed;
-    std::set<std::pair<long, long>> used = fixed_edges;
+    EdgeKeySet used = fixed_edges;
     for (const auto& q : web.quads) {
       int chosen = -1;
       double quality = -1;

@@ -3,7 +3,6 @@
 #include "stickmorph/internal/steiner_reduction.h"
 
 #include <algorithm>
-#include <set>
 
 #include "stickmorph/internal/geometry.h"
 
@@ -22,7 +21,8 @@ int remove_redundant_steiner(const PolygonPair& pair, CompatibleMesh& mesh, cons
   // Triangles around each node (dead ones are skipped when read) and the
   // set of edges by vertex identity, both kept up to date as stars change.
   std::vector<std::vector<int>> around = triangles_around(mesh);
-  std::set<std::pair<long, long>> edges;
+  EdgeKeySet edges;
+  edges.reserve(3 * mesh.triangles.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     for (int j = 0; j < 3; ++j)
       edges.insert(edge_key(pair, mesh.corners, mesh.triangles[t][j], mesh.triangles[t][(j + 1) % 3]));
