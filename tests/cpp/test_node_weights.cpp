@@ -3,6 +3,8 @@
 // neighbours ([8], section 2.2 of the paper).
 #include "catch.h"
 
+#include <cmath>
+
 #include "stickmorph/errors.h"
 #include "stickmorph/internal/barycentric_weights.h"
 
@@ -84,4 +86,48 @@ TEST_CASE("node_weights scales the offsets by a power of two and refuses a flat 
     flat[0] = {0, -scale};
     CHECK_THROWS_AS(node_weights(tri, topo, flat, 0, WeightKind::MeanValue), VerificationError);
   }
+}
+
+TEST_CASE("try_node_weights gives node_weights' weights into kept storage, false for a flat star", "[node_weights]") {
+  // A fan of seven neighbours round node 0, irregular: the scratch form the
+  // rigid morph calls every frame returns the same weights, bit for bit,
+  // reusing its vectors, and reports the flat star instead of throwing.
+  FigureTriangulation tri;
+  tri.figure_vertices = 1;
+  tri.enclosure_vertices = 7;
+  tri.source = {{0.1, -0.05}};
+  for (int k = 0; k < 7; ++k) {
+    const double a = 2 * 3.14159265358979 * k / 7 + 0.1 * (k % 3);
+    tri.source.push_back({(1 + 0.3 * (k % 2)) * std::cos(a), (1 + 0.3 * (k % 2)) * std::sin(a)});
+  }
+  tri.target = tri.source;
+  for (int k = 0; k < 7; ++k) tri.triangles.push_back({0, 1 + k, 1 + (k + 1) % 7});
+  const Topology topo = build_topology(tri);
+  std::vector<Vec2> q;
+  std::vector<double> w;
+  for (WeightKind kind : {WeightKind::MeanValue, WeightKind::Floater, WeightKind::Uniform}) {
+    REQUIRE(try_node_weights(topo, tri.source, 0, kind, q, w));
+    CHECK(w == node_weights(tri, topo, tri.source, 0, kind));
+    const Vec2 r = reproduce(w, std::vector<Vec2>(q.begin(), q.end()));
+    CHECK(r[0] == Approx(0).margin(1e-15));
+    CHECK(r[1] == Approx(0).margin(1e-15));
+  }
+  // Mean value weights with sqrt lengths agree with a hypot reference to
+  // rounding.
+  std::vector<double> reference(q.size());
+  double sum = 0;
+  for (std::size_t j = 0; j < q.size(); ++j) {
+    const Vec2& p = q[(j + q.size() - 1) % q.size()];
+    const Vec2& c = q[j];
+    const Vec2& n = q[(j + 1) % q.size()];
+    const double before = std::atan2(p[0] * c[1] - p[1] * c[0], p[0] * c[0] + p[1] * c[1]);
+    const double after = std::atan2(c[0] * n[1] - c[1] * n[0], c[0] * n[0] + c[1] * n[1]);
+    reference[j] = (std::tan(before / 2) + std::tan(after / 2)) / std::hypot(c[0], c[1]);
+    sum += reference[j];
+  }
+  REQUIRE(try_node_weights(topo, tri.source, 0, WeightKind::MeanValue, q, w));
+  for (std::size_t j = 0; j < q.size(); ++j) CHECK(w[j] == Approx(reference[j] / sum).epsilon(1e-14));
+  std::vector<Vec2> flat = tri.source;
+  flat[0] = {0.5 * (tri.source[1][0] + tri.source[2][0]), 0.5 * (tri.source[1][1] + tri.source[2][1])};
+  CHECK_FALSE(try_node_weights(topo, flat, 0, WeightKind::MeanValue, q, w));
 }
