@@ -33,9 +33,13 @@
 //      disk whose triangles are all positive and whose boundary is simple is
 //      embedded, the certificate of frame_certificate.h), and with
 //      FrameCheck::Full also verify_frame on the figure. A frame that fails (only
-//      rounding can make it fail) falls back to step 4, then to the plain
-//      barycentric frame of [8] at u with its refinement (checked_morph_frame),
-//      moved by the similarity and checked again; only then is it refused.
+//      rounding can make it fail) is first refined in long double, then has
+//      the Steiner vertices of its inverted triangles moved into their
+//      stars' kernels (untangle_steiner_vertices, the figure untouched),
+//      checked again after each; failing that it falls back to the plain
+//      barycentric frame of [8] at u with its refinement
+//      (checked_morph_frame), moved by the similarity and checked again;
+//      only then is it refused.
 #pragma once
 
 #include <memory>
@@ -62,7 +66,7 @@ struct GuidedFrame {
   std::vector<Vec2> positions;  ///< all n+k+s node positions, output space
   GuideFit fit = GuideFit::Exact;
   double parameter = 0;         ///< the morph parameter u of the animation time
-  bool refined = false;         ///< the barycentric fallback needed long double refinement
+  bool refined = false;         ///< the frame needed long double refinement (or Steiner vertices moved into their kernels)
   double verify_ms = 0;
 };
 

@@ -6,6 +6,7 @@
 #include "catch.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -15,6 +16,7 @@
 #include "option_checks.h"
 #include "motion_helpers.h"
 #include "stickmorph/errors.h"
+#include "stickmorph/frame_certificate.h"
 #include "stickmorph/frame_verification.h"
 #include "stickmorph/guided_morph.h"
 #include "stickmorph/internal/morph_topology.h"
@@ -595,4 +597,32 @@ TEST_CASE("the rigid morph handles a regression pair whose normalised target doe
   MorphStickFiguresResult result;
   REQUIRE_NOTHROW(result = morph_rigid(pair.source, pair.target, N, true));
   check_rigid_result(pair.source, pair.target, result, N);
+}
+
+TEST_CASE("a rigid frame that rounding flipped is refined in long double before any fallback", "[guided_morph]") {
+  // The 10^4-vertex sine wave wound into a spiral (the benchmark's spiral
+  // family): at frame 34 of 50 the blended frame squeezes the innermost
+  // turns until two figure vertices lie 1e-8 apart, 1e-11 of the
+  // coordinates, and a Steiner vertex beside them comes out on the wrong
+  // side. The solve refined in long double (GuidedMorph::frame) gives a
+  // valid frame there with the figure where the blended solve put it; only
+  // the barycentric fallback was tried before, and it failed too. (Other
+  // frames of this morph still fail: see README, "Limits".)
+  const int n = 10000;
+  std::vector<Vec2> source, target;
+  std::vector<std::array<long, 2>> edges;
+  for (int i = 0; i < n; ++i) {
+    const double angle = std::sqrt(double(i + 1));
+    source.push_back({0.5 * i, 3 * std::sin(i * 0.3)});
+    target.push_back({angle * std::cos(angle), angle * std::sin(angle)});
+    if (i > 0) edges.push_back({i - 1, i});
+  }
+  const StickFigure from = make_stick_figure(source, edges), to = make_stick_figure(target, edges);
+  MorphStickFiguresOptions options;
+  options.frames = 50;
+  GuidedMorph morph = prepare_rigid_morph(from, to, options);
+  const GuidedFrame frame = morph.frame(34.0 / 49, 34, true, "");
+  CHECK(frame.refined);
+  CHECK(frame.fit == GuideFit::Blended);
+  CHECK(certificate_defect(morph.triangulation(), frame.positions).empty());
 }
