@@ -340,9 +340,13 @@ def write_report(records, polygon_pairs, run, out_path, plot_dir, motion=None, c
         ["frames per morph", str(run["frames"])],
         ["runtime of the whole command", f"{run['runtime_s']:.0f} s ({run['runtime_s'] / 60:.1f} min)"],
     ], ["---", "---"]))
-    add("\nEach (case, method) runs once, in a child process of its own (peak memory is that process's "
-        "`ru_maxrss`), with an address-space limit of " + str(run["memory_limit_mib"]) + " MiB and a time "
-        "limit. Times are single wall-clock measurements on a 2-core machine that other jobs may share: "
+    repeat = run.get("repeat", 1)
+    repeated = (f"Each (case, method) runs in a child process of its own (peak memory is that process's "
+                f"`ru_maxrss`), with an address-space limit of {run['memory_limit_mib']} MiB and a time limit; "
+                + (f"the improved method's cases of at most {run.get('repeat_max_n')} requested vertices run "
+                   f"{repeat} times and the run of median total time (triangulate + morph) is reported (the "
+                   "growth exponents rest on them), the rest once. " if repeat > 1 else "once. "))
+    add("\n" + repeated + "Times are wall-clock measurements on a 2-core machine that other jobs may share: "
         "read them to within tens of percent, the small ones (below a millisecond) only as orders of "
         "magnitude.\n")
 

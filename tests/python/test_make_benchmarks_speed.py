@@ -65,3 +65,17 @@ def test_scrub_section_and_headline():
                and "barycentric scrub 50" in line for line in lines)
     assert any(line.startswith("At n ≈ 100000: polyline no result (timeout") for line in lines)
     assert "Not measured in this run" in "\n".join(mb.scrub_section(None))
+
+
+def test_headline_and_table_give_the_frame_after_the_solvers_setup():
+    # The same frame mean with and without the barycentric solver's one-time set-up: the
+    # amortised ratio misses the target, the ratio after set-up meets it; both are stated.
+    cells = [cell("polyline", 1000, 1000, 10.0, 10.0, 0.17, 0.09)]
+    cells[0].result.update({"frame_setup_ms": 5.3, "frame_after_setup_ms": 0.14, "frame_after_setup_lu_ratio": 0.07})
+    lines = mb.speed_headline(index(cells), ["polyline"], [1000], None)
+    text = "\n".join(lines)
+    assert "barycentric (MorphSolver::solve + certificate): does not hold in every family; worst 0.170x" in text
+    assert "barycentric once its solver is set up (the first solve's moment space left out): holds in every " \
+           "family; worst 0.070x (polyline)" in text
+    table = "\n".join(mb.frame_cost_section(index(cells), ["polyline"], [1000]))
+    assert "| **0.170** | 5.3 ms | 0.070 |" in table
