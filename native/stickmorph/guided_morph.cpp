@@ -762,7 +762,7 @@ GuidedFrame GuidedMorph::frame(double t, int frame, bool verify, const std::stri
   start = Clock::now();
   if (!s.fallback) s.fallback.emplace(s.tri, s.weight_kind);
   CheckedFrame plain =
-      checked_morph_frame(*s.fallback, s.tri, s.source, s.decomposition, u, frame, true, context, check);
+      checked_morph_frame(*s.fallback, s.tri, s.source, s.decomposition, u, frame, true, context, check, t);
   s.stats.solve_ms += ms_since(start) - plain.verify_ms;
   s.stats.verify_ms += plain.verify_ms;
   result.verify_ms += plain.verify_ms;

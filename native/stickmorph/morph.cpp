@@ -124,7 +124,8 @@ bool untangle_steiner_vertices(const FigureTriangulation& triangulation, std::ve
 CheckedFrame checked_morph_frame(MorphSolver& solver, const FigureTriangulation& triangulation,
                                  const StickFigure& source, const Decomposition& source_decomposition,
                                  double t, int frame, bool verify, const std::string& context,
-                                 FrameCheck check) {
+                                 FrameCheck check, std::optional<double> label_time) {
+  const double shown = label_time.value_or(t);  // the time messages name
   // Refinement rounds for a frame that fails: each round gains roughly the
   // extra precision of long double until the result is correctly rounded;
   // beyond three it no longer changes.
@@ -134,7 +135,7 @@ CheckedFrame checked_morph_frame(MorphSolver& solver, const FigureTriangulation&
     try {
       return directly ? solver.solve_directly(t) : solver.solve(t);
     } catch (const VerificationError&) {
-      throw VerificationError(context + frame_label(frame, t) + ": the morph's linear system is singular");
+      throw VerificationError(context + frame_label(frame, shown) + ": the morph's linear system is singular");
     }
   };
   CheckedFrame result;
@@ -157,7 +158,7 @@ CheckedFrame checked_morph_frame(MorphSolver& solver, const FigureTriangulation&
   auto defect_now = [&] {
     const auto start = Clock::now();
     std::string defect =
-        frame_defect(triangulation, source, source_decomposition, result.positions, frame, t, check);
+        frame_defect(triangulation, source, source_decomposition, result.positions, frame, shown, check);
     result.verify_ms += ms_since(start);
     return defect;
   };

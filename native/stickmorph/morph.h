@@ -20,6 +20,7 @@
 #pragma once
 
 #include <Eigen/SparseCore>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -149,10 +150,14 @@ struct CheckedFrame {
 /// (untangle_steiner_vertices), and only then refused. `frame` names the frame in messages (frame_label; negative: by
 /// its time alone); `context` leads every message ("morph: ").
 /// @throws VerificationError "<context><frame label>: <defect>".
+/// `label_time`, if given, is the time that messages name instead of t
+/// (the rigid morph's fallback solves at its morph parameter u, while its
+/// frames are named by their animation time).
 CheckedFrame checked_morph_frame(MorphSolver& solver, const FigureTriangulation& triangulation,
                                  const StickFigure& source, const Decomposition& source_decomposition,
                                  double t, int frame, bool verify, const std::string& context,
-                                 FrameCheck check = FrameCheck::Certificate);
+                                 FrameCheck check = FrameCheck::Certificate,
+                                 std::optional<double> label_time = std::nullopt);
 
 /// Moves the Steiner vertices (nodes after the figure and the enclosure)
 /// of inverted triangles of the frame `positions` into the kernels of their
