@@ -601,13 +601,14 @@ TEST_CASE("the rigid morph handles a regression pair whose normalised target doe
 
 TEST_CASE("a rigid frame that rounding flipped is refined in long double before any fallback", "[guided_morph]") {
   // The 10^4-vertex sine wave wound into a spiral (the benchmark's spiral
-  // family): at frame 34 of 50 the blended frame squeezes the innermost
-  // turns until two figure vertices lie 1e-8 apart, 1e-11 of the
-  // coordinates, and a Steiner vertex beside them comes out on the wrong
-  // side. The solve refined in long double (GuidedMorph::frame) gives a
-  // valid frame there with the figure where the blended solve put it; only
-  // the barycentric fallback was tried before, and it failed too. (Other
-  // frames of this morph still fail: see README, "Limits".)
+  // family): in two of its 48 interior frames the blended frame squeezes
+  // the innermost turns until neighbouring figure vertices lie about 1e-8
+  // apart, 1e-11 of the coordinates, and a triangle beside them comes out
+  // of the solve inverted. Refined in long double (GuidedMorph::frame)
+  // those frames are valid with the figure where the blended solve put it;
+  // before, the barycentric fallback was the only repair and failed there
+  // too, so the morph was refused. Every frame is checked here again by
+  // the certificate, independently of the morph's own check.
   const int n = 10000;
   std::vector<Vec2> source, target;
   std::vector<std::array<long, 2>> edges;
@@ -621,17 +622,12 @@ TEST_CASE("a rigid frame that rounding flipped is refined in long double before 
   MorphStickFiguresOptions options;
   options.frames = 50;
   GuidedMorph morph = prepare_rigid_morph(from, to, options);
-  const GuidedFrame frame = morph.frame(34.0 / 49, 34, true, "");
-  CHECK(frame.refined);
-  CHECK(frame.fit == GuideFit::Blended);
-  CHECK(certificate_defect(morph.triangulation(), frame.positions).empty());
-  // Frame 29 still fails, through the barycentric fallback (solved at the
-  // morph parameter u = 0.096): the message names the frame by its
-  // animation time, 29 / 49, as every other frame's does.
-  try {
-    morph.frame(29.0 / 49, 29, true, "");
-    FAIL("frame 29 of the 10^4-vertex spiral is refused today; if it is not, this test needs updating");
-  } catch (const VerificationError& error) {
-    CHECK(std::string(error.what()).rfind("frame 29 (t = 0.5918): ", 0) == 0);
+  int refined = 0;
+  for (int f = 1; f < 49; ++f) {
+    const GuidedFrame frame = morph.frame(f / 49.0, f, true, "");
+    refined += frame.refined;
+    CHECK(frame.fit != GuideFit::Barycentric);
+    REQUIRE(certificate_defect(morph.triangulation(), frame.positions).empty());
   }
+  CHECK(refined >= 1);
 }

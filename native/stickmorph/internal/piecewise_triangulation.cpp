@@ -22,7 +22,7 @@ namespace {
 constexpr long kDeepAverage = 12;
 constexpr int kRoutedCutMinCorners = 64;
 constexpr double kCutGain = 0.8;
-// Candidates measured exactly per pair (see best_routed_cut).
+// Candidates measured exactly at most per pair (see best_routed_cut).
 constexpr int kMeasuredCuts = 4;
 
 // Glues `piece` into `mesh`: its corner k is mesh node nodes[k] (a corner of
@@ -94,14 +94,22 @@ bool best_routed_cut(const PolygonPair& pair, const std::vector<std::array<int, 
   if (n < kRoutedCutMinCorners) return false;
   const long total = spiderweb_depth_total(pair, source_base, target_base);
   if (total <= kDeepAverage * n) return false;
-  double best = kCutGain * double(total);
-  bool found = false;
+  const double enough = kCutGain * double(total);
   // Measuring a cut exactly triangulates both pieces in both polygons, the
-  // bulk of a deep pair's cost: only the kMeasuredCuts candidates whose
-  // pieces are smallest by estimate are measured (one whose rounded bends
+  // bulk of a deep pair's cost: candidates are measured in the order of
+  // their pieces' size by estimate, and the first that gains enough is
+  // taken; at most kMeasuredCuts are measured (one whose rounded bends
   // leave a piece not weakly simple does not count). A corridor's spiderweb
   // grows as the square of its corners, so the estimate is the sum of the
   // squares of the pieces' sizes (corners plus bends).
+  //
+  // Taking the least measured cost of the first four instead was measured
+  // against this (triangulate_figures, the seven benchmark families at 100
+  // to 3000 vertices): the estimate's first choice came out with as few
+  // Steiner vertices or fewer in 26 of the 28 cases (the spiral at 3000:
+  // 501 against 600, the star polygon at 3000: 2007 against 2052; at 1000:
+  // 686 against 678), and the
+  // spiral triangulated 20-32% faster (1000 vertices: 163 ms against 222).
   std::vector<RoutedCut> candidates = routed_cut_candidates(pair, source_base, target_base);
   std::vector<std::pair<double, std::size_t>> order;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
@@ -125,14 +133,13 @@ bool best_routed_cut(const PolygonPair& pair, const std::vector<std::array<int, 
     double cost = double(cut.source_bends.size());
     for (const RoutedPiece& piece : pieces)
       if (piece.nodes.size() > 3) cost += double(spiderweb_depth_total(piece.pair, piece.source_base, piece.target_base));
-    if (cost < best) {
-      best = cost;
+    if (cost < enough) {
       best_cut = std::move(cut);
       best_pieces = std::move(pieces);
-      found = true;
+      return true;
     }
   }
-  return found;
+  return false;
 }
 
 }  // namespace
