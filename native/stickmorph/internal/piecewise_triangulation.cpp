@@ -22,7 +22,7 @@ namespace {
 constexpr long kDeepAverage = 12;
 constexpr int kRoutedCutMinCorners = 64;
 constexpr double kCutGain = 0.8;
-// Candidates measured exactly at most per pair (see best_routed_cut).
+// Candidates measured exactly at most per pair (see gaining_routed_cut).
 constexpr int kMeasuredCuts = 4;
 
 // Glues `piece` into `mesh`: its corner k is mesh node nodes[k] (a corner of
@@ -85,11 +85,11 @@ CompatibleMesh routed_mesh(const PolygonPair& pair, const RoutedCut& cut, const 
   return mesh;
 }
 
-// The routed cut whose pieces need the smallest spiderwebs, if it gains
-// enough over the pair's own (see kCutGain).
-bool best_routed_cut(const PolygonPair& pair, const std::vector<std::array<int, 3>>& source_base,
-                     const std::vector<std::array<int, 3>>& target_base, RoutedCut& best_cut,
-                     std::array<RoutedPiece, 2>& best_pieces) {
+// A routed cut whose pieces' spiderwebs gain enough over the pair's own
+// (see kCutGain): the first such in the order of the estimate below.
+bool gaining_routed_cut(const PolygonPair& pair, const std::vector<std::array<int, 3>>& source_base,
+                        const std::vector<std::array<int, 3>>& target_base, RoutedCut& chosen_cut,
+                        std::array<RoutedPiece, 2>& chosen_pieces) {
   const int n = int(pair.corners.size());
   if (n < kRoutedCutMinCorners) return false;
   const long total = spiderweb_depth_total(pair, source_base, target_base);
@@ -108,8 +108,8 @@ bool best_routed_cut(const PolygonPair& pair, const std::vector<std::array<int, 
   // to 3000 vertices): the estimate's first choice came out with as few
   // Steiner vertices or fewer in 26 of the 28 cases (the spiral at 3000:
   // 501 against 600, the star polygon at 3000: 2007 against 2052; at 1000:
-  // 686 against 678), and the
-  // spiral triangulated 20-32% faster (1000 vertices: 163 ms against 222).
+  // 686 against 678), and the spiral triangulated 20-32% faster (1000
+  // vertices: 163 ms against 222).
   std::vector<RoutedCut> candidates = routed_cut_candidates(pair, source_base, target_base);
   std::vector<std::pair<double, std::size_t>> order;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
@@ -134,8 +134,8 @@ bool best_routed_cut(const PolygonPair& pair, const std::vector<std::array<int, 
     for (const RoutedPiece& piece : pieces)
       if (piece.nodes.size() > 3) cost += double(spiderweb_depth_total(piece.pair, piece.source_base, piece.target_base));
     if (cost < enough) {
-      best_cut = std::move(cut);
-      best_pieces = std::move(pieces);
+      chosen_cut = std::move(cut);
+      chosen_pieces = std::move(pieces);
       return true;
     }
   }
@@ -180,7 +180,7 @@ CompatibleMesh piecewise_mesh(const PolygonPair& pair, const std::vector<std::ar
     // A deep pair: cut along a routed path if that shrinks the spiderweb.
     RoutedCut cut;
     std::array<RoutedPiece, 2> pieces;
-    if (options.routed_cuts && best_routed_cut(pair, source_base, target_base, cut, pieces)) {
+    if (options.routed_cuts && gaining_routed_cut(pair, source_base, target_base, cut, pieces)) {
       const int counted = spiderweb_steiner;
       const int taken = routed_cuts_taken ? *routed_cuts_taken : 0;
       try {
