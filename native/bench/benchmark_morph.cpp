@@ -429,7 +429,8 @@ int run(int argc, char** argv) {
                              [](const auto& a, const auto& b) { return a.first < b.first; });
             r = succeeded[succeeded.size() / 2].second;
             std::string totals;
-            for (const auto& [total, run] : succeeded) totals += (totals.empty() ? "" : ",") + std::to_string(total);
+            for (const auto& entry : succeeded)
+              totals += (totals.empty() ? "" : ",") + std::to_string(entry.first);
             record.set("repeats", runs).raw("total_ms_runs", "[" + totals + "]");
           }
           record.set("status", r.status).set("wall_ms", r.wall_ms).set("peak_kib", r.peak_kib);

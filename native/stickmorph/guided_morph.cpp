@@ -492,8 +492,8 @@ struct GuidedMorph::State {
       const double ax = a[0] - cx, ay = a[1] - cy, bx = b[0] - cx, by = b[1] - cy;
       // The root of the product of the squared lengths where that product
       // is normal (within an ulp or two of the hypot product, and several
-      // times faster: hypot was 3% of a blended frame after the weights'
-      // went), else hypot.
+      // times faster: hypot was still 3% of a blended frame once the mean
+      // value weights no longer took it), else hypot.
       const double lengths = squared[j] >= 0 ? std::sqrt((ax * ax + ay * ay) * (bx * bx + by * by))
                                              : std::hypot(ax, ay) * std::hypot(bx, by);
       smallest_sine = std::min(smallest_sine, (ax * by - ay * bx) / lengths);

@@ -24,7 +24,7 @@ double cross(const Vec2& a, const Vec2& b) {
 double dot(const Vec2& a, const Vec2& b) { return a[0] * b[0] + a[1] * b[1]; }
 
 // |p| for the offsets of a star scaled to a largest coordinate of about 1:
-// the square root of the sum of squares, which is within an ulp of
+// the square root of the sum of squares, which is within about an ulp of
 // std::hypot and several times faster (hypot was a tenth of a blended
 // rigid frame, perf at 10^3 vertices), and hypot itself only where a square
 // would leave the normal range.
