@@ -746,12 +746,8 @@ GuidedFrame GuidedMorph::frame(double t, int frame, bool verify, const std::stri
     (exact ? s.steiner_system : s.full_system).refine(normalised, kRefinementRounds);
     std::vector<Vec2> repaired = s.similarity.apply(u, normalised);
     s.stats.solve_ms += ms_since(start);
-    if (defect_of(repaired).empty()) {
-      result.positions = std::move(repaired);
-      result.refined = true;
-      return result;
-    }
-    if (untangle_steiner_vertices(s.output, repaired) && defect_of(repaired).empty()) {
+    if (defect_of(repaired).empty() ||
+        (untangle_steiner_vertices(s.output, repaired) && defect_of(repaired).empty())) {
       result.positions = std::move(repaired);
       result.refined = true;
       return result;
