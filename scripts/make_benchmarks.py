@@ -794,8 +794,8 @@ def frame_cost_section(cells, families, sizes):
         return md
     add(f"Issue 15: at {FRAME_LU_N} vertices a frame (the solve and the per-frame certificate) should cost at most "
         f"{FRAME_LU_TARGET:g} times a fresh sparse LU factorize-and-solve of the same system, measured in the same "
-        "run (the same child process). The fresh LU is `Eigen::SparseLU` with COLAMD, MorphSolver's ordering: "
-        "symbolic analysis, numeric factorization and the solve of both coordinates of the system at t = 0.5 "
+        "run (the same child process). The fresh LU is MorphSolver's: `Eigen::SparseLU` on the system permuted "
+        "symmetrically by AMD (`SymmetricOrderedLU`): the ordering, symbolic analysis, numeric factorization and the solve of both coordinates of the system at t = 0.5 "
         "(median of three; the weights and the assembly are not counted). Barycentric: a new `MorphSolver` on the "
         "barycentric method's triangulation solves the morph's interior times f / (N − 1) in order, each result "
         "followed by `certificate_defect`, as `morph_triangulation` makes a frame; mean (amortised: the first "

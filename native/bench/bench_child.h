@@ -19,13 +19,13 @@
 #include <new>
 #include <string>
 
-#include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "stickmorph/errors.h"
 #include "stickmorph/figure_triangulation.h"
+#include "stickmorph/internal/compact_lu.h"
 #include "stickmorph/morph.h"
 
 namespace stickmorph::bench {
@@ -107,7 +107,8 @@ inline ChildResult run_child(const std::function<std::string()>& work, int secon
 /// Issue 15's yardstick: a fresh sparse LU factorize-and-solve of the
 /// morph's system at time t on `tri` ((I - W_interior(t)) x = W_boundary(t)
 /// x_boundary, W(t) blending the mean value weights of tri.source and
-/// tri.target), with the ordering MorphSolver uses (COLAMD): symbolic
+/// tri.target), with the factorization MorphSolver uses (SparseLU on the
+/// system ordered symmetrically by AMD, internal::SymmetricOrderedLU): symbolic
 /// analysis, numeric factorization and the solve of both coordinates,
 /// timed; the weights and the assembly are not. The median of `repeats`
 /// runs, in milliseconds; -1 if the factorization failed.
@@ -142,7 +143,7 @@ inline double fresh_lu_ms(const FigureTriangulation& tri, double t, int repeats 
   std::vector<double> times;
   for (int r = 0; r < std::max(1, repeats); ++r) {
     const auto start = Clock::now();
-    Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
+    internal::SymmetricOrderedLU lu;
     lu.analyzePattern(a);
     lu.factorize(a);
     const Eigen::MatrixX2d x = lu.solve(b);

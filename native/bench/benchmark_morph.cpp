@@ -26,7 +26,6 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <Eigen/SparseLU>
 #include <cerrno>
 #include <charconv>
 #include <chrono>

@@ -75,7 +75,7 @@ std::string output_defect(const FigureTriangulation& tri, const StickFigure& sou
   return {};
 }
 
-using LU = SparseLU;  // compact_lu.h
+using LU = SymmetricOrderedLU;  // compact_lu.h
 
 // One linear system x_v - sum_j w_vj x_j = 0 over the rows of some interior
 // nodes, the other nodes known; a fixed sparsity pattern, so the symbolic

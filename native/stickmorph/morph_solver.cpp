@@ -23,7 +23,7 @@ using namespace internal;
 using SparseMatrix = Eigen::SparseMatrix<double>;  // column-major, as SparseLU wants
 using LongVector = Eigen::Matrix<long double, Eigen::Dynamic, 2>;
 
-using LU = SparseLU;  // compact_lu.h
+using LU = SymmetricOrderedLU;  // compact_lu.h
 
 /// (I - W_interior(t)) x = W_boundary(t) x_boundary for every t, with the
 /// two endpoint matrices assembled on one sparsity pattern so that a frame
@@ -39,8 +39,11 @@ using LU = SparseLU;  // compact_lu.h
 ///       1985   5.4 ms               7.1 ms          2.9 ms,   err 5e-11    12 ms
 ///       8065   37 ms                47 ms           27 ms,    err 3e-10    53 ms
 /// (BiCGSTAB with IncompleteLUT was slower than both LU variants; AMD and
-/// natural orderings gave 1.1-4 times the fill of COLAMD and up to 11 times
-/// the time.) On the long thin triangulations around polylines and trees
+/// natural orderings given to SparseLU as column orderings gave 1.1-4 times
+/// the fill of COLAMD and up to 11 times the time. AMD applied to rows and
+/// columns alike fills less than COLAMD and factorizes 1.3-2.9 times
+/// faster, so the factorizations are now SymmetricOrderedLU's, see
+/// compact_lu.h; the table predates it.) On the long thin triangulations around polylines and trees
 /// neither helps much: a numeric refactorization costs nearly a fresh LU
 /// there, and diagonally preconditioned BiCGSTAB converges slowly (up to 7
 /// times slower, benchmark_morph); BiCGSTAB preconditioned with a nearby

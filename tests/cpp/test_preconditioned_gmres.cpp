@@ -31,7 +31,7 @@ SparseMatrix chain_system(int m, double phase, double mass = 0.999) {
 }
 
 CompactLU factors_of(const SparseMatrix& a) {
-  SparseLU lu;
+  SymmetricOrderedLU lu;
   lu.analyzePattern(a);
   lu.factorize(a);
   REQUIRE(lu.info() == Eigen::Success);

@@ -8,10 +8,40 @@
 
 namespace stickmorph::internal {
 
-CompactLU::CompactLU(const SparseLU& lu) {
+void SymmetricOrderedLU::analyzePattern(const Eigen::SparseMatrix<double>& a) {
+  // AMDOrdering gives the inverse of P (as Eigen's SimplicialLDLT uses it).
+  Permutation p_inverse;
+  Eigen::AMDOrdering<int> ordering;
+  ordering(a, p_inverse);
+  p_ = p_inverse.inverse();
+  permuted_ = a.twistedBy(p_);
+  factors_.analyzePattern(permuted_);
+}
+
+void SymmetricOrderedLU::factorize(const Eigen::SparseMatrix<double>& a) {
+  permuted_ = a.twistedBy(p_);
+  factors_.factorize(permuted_);
+}
+
+Eigen::MatrixX2d SymmetricOrderedLU::solve(const Eigen::MatrixX2d& b) const {
+  const Eigen::MatrixX2d y = factors_.solve(Eigen::MatrixX2d(p_ * b));
+  return p_.transpose() * y;
+}
+
+CompactLU::CompactLU(const SymmetricOrderedLU& ordered) {
+  const SymmetricOrderedLU::Factors& lu = ordered.factors();
   const int m = int(lu.rows());
-  pr_.assign(lu.rowsPermutation().indices().data(), lu.rowsPermutation().indices().data() + m);
-  pc_.assign(lu.colsPermutation().indices().data(), lu.colsPermutation().indices().data() + m);
+  // B = P A P^T and P_r' B P_c'^T = L U: A's row i is row pr'[p[i]] of
+  // L U, its column c column pc'[p[c]].
+  const int* p = ordered.ordering().indices().data();
+  const int* pr = lu.rowsPermutation().indices().data();
+  const int* pc = lu.colsPermutation().indices().data();
+  pr_.resize(std::size_t(m));
+  pc_.resize(std::size_t(m));
+  for (int i = 0; i < m; ++i) {
+    pr_[std::size_t(i)] = pr[p[i]];
+    pc_[std::size_t(i)] = pc[p[i]];
+  }
   const auto l = lu.matrixL();
   const auto u = lu.matrixU();
   using Supernodal = std::decay_t<decltype(l.m_mapL)>;
