@@ -186,20 +186,10 @@ class ConvexCombinationSystem {
     }
     if (!solved) {
       // A static-pivot refactorization on the last factors' structure
-      // first (CompactLU::refactorize, as MorphSolver does), kept when its
-      // solution meets the tolerance; else SparseLU with pivoting.
-      bool refactorized = false;
-      if (factorized_ && factors_.refactorization_pays() && factors_.refactorize(a_)) {
-        x = factors_.solve(b);
-        refactorized = (b - a_ * x).norm() <= tolerance_ * std::max(b.norm(), 1e-300);
-      }
-      if (!refactorized) {
-        lu_.factorize(a_);
-        factorized_ = lu_.info() == Eigen::Success;
-        if (!factorized_) return false;
-        factors_ = CompactLU(lu_);
-        x = factors_.solve(b);
-      }
+      // first, kept when its solution meets the tolerance; else SparseLU
+      // with pivoting (factorize_checked, as MorphSolver does).
+      factorized_ = factorize_checked(a_, b, tolerance_, factorized_, lu_, factors_, &x);
+      if (!factorized_) return false;
       ++factorizations_;
     }
     if (!x.allFinite()) return false;

@@ -170,21 +170,10 @@ class MorphSystem {
   bool factorize(double t, bool pivoting = false) {
     t_ = t;
     blend(t);
-    std::unique_ptr<CompactLU> factors;
-    if (!pivoting && !anchors_.empty() && anchors_[current_].factors->refactorization_pays()) {
-      factors = std::make_unique<CompactLU>(*anchors_[current_].factors);
-      bool kept = factors->refactorize(a_);
-      if (kept) {
-        const Eigen::MatrixX2d b = rhs().cast<double>();
-        kept = (b - a_ * factors->solve(b)).norm() <= 1e-10 * std::max(b.norm(), 1e-300);
-      }
-      if (!kept) factors.reset();
-    }
-    if (!factors) {
-      lu_.factorize(a_);
-      if (lu_.info() != Eigen::Success) return false;
-      factors = std::make_unique<CompactLU>(lu_);
-    }
+    // The latest anchor's structure, copied: the anchor itself stays.
+    const bool refactorize = !pivoting && !anchors_.empty() && anchors_[current_].factors->refactorization_pays();
+    auto factors = refactorize ? std::make_unique<CompactLU>(*anchors_[current_].factors) : std::make_unique<CompactLU>();
+    if (!factorize_checked(a_, rhs().cast<double>(), 1e-10, refactorize, lu_, *factors)) return false;
     ++factorizations_;
     // A new anchor while there is room, else the least recently used one
     // is replaced.

@@ -178,4 +178,21 @@ Eigen::MatrixX2d CompactLU::solve(const Eigen::MatrixX2d& b) const {
   return x;
 }
 
+bool factorize_checked(const Eigen::SparseMatrix<double>& a, const Eigen::MatrixX2d& b, double tolerance,
+                       bool try_refactorization, SymmetricOrderedLU& lu, CompactLU& factors,
+                       Eigen::MatrixX2d* solution) {
+  if (try_refactorization && factors.refactorization_pays() && factors.refactorize(a)) {
+    Eigen::MatrixX2d x = factors.solve(b);
+    if ((b - a * x).norm() <= tolerance * std::max(b.norm(), 1e-300)) {
+      if (solution) *solution = std::move(x);
+      return true;
+    }
+  }
+  lu.factorize(a);
+  if (lu.info() != Eigen::Success) return false;
+  factors = CompactLU(lu);
+  if (solution) *solution = factors.solve(b);
+  return true;
+}
+
 }  // namespace stickmorph::internal

@@ -111,4 +111,18 @@ class CompactLU {
   std::vector<int> stamp_;
 };
 
+/// Factors of `a` into `factors`, for a x = b: first, when
+/// `try_refactorization` and factors.refactorization_pays(), a static-pivot
+/// refactorization on `factors`' own structure (CompactLU::refactorize),
+/// kept only when its solution's residual is at most `tolerance` |b|: a
+/// pivot order kept from another matrix can grow the factors; otherwise
+/// (and when the refactorization is refused) `lu`, analysed for a's
+/// pattern, factorizes with pivoting. Both stateful solvers factorize this
+/// way (MorphSolver, GuidedMorph's systems). The solution of a x = b goes
+/// to `solution` if given (the refactorization's check computes it anyway).
+/// False if `lu` finds `a` singular.
+bool factorize_checked(const Eigen::SparseMatrix<double>& a, const Eigen::MatrixX2d& b, double tolerance,
+                       bool try_refactorization, SymmetricOrderedLU& lu, CompactLU& factors,
+                       Eigen::MatrixX2d* solution = nullptr);
+
 }  // namespace stickmorph::internal
