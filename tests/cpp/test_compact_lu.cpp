@@ -45,6 +45,13 @@ Eigen::MatrixX2d right_hand_side(int m) {
   return b;
 }
 
+// The ordering, the analysis and the factorization of a, which must succeed.
+void factorize_ordered(SymmetricOrderedLU& lu, const SparseMatrix& a) {
+  lu.analyzePattern(a);
+  lu.factorize(a);
+  REQUIRE(lu.info() == Eigen::Success);
+}
+
 double relative_residual(const SparseMatrix& a, const Eigen::MatrixX2d& x, const Eigen::MatrixX2d& b) {
   return (b - a * x).norm() / b.norm();
 }
@@ -54,9 +61,7 @@ double relative_residual(const SparseMatrix& a, const Eigen::MatrixX2d& x, const
 TEST_CASE("CompactLU solves as SparseLU does", "[compact_lu]") {
   const SparseMatrix a = grid_system(12, 0.0);
   SymmetricOrderedLU lu;
-  lu.analyzePattern(a);
-  lu.factorize(a);
-  REQUIRE(lu.info() == Eigen::Success);
+  factorize_ordered(lu, a);
   const CompactLU compact(lu);
   const Eigen::MatrixX2d b = right_hand_side(int(a.rows()));
   const Eigen::MatrixX2d x = compact.solve(b);
@@ -68,8 +73,7 @@ TEST_CASE("CompactLU solves as SparseLU does", "[compact_lu]") {
 TEST_CASE("CompactLU::refactorize factorizes a matrix of the same pattern on the kept structure", "[compact_lu]") {
   const SparseMatrix a = grid_system(15, 0.0), other = grid_system(15, 2.5);
   SymmetricOrderedLU lu;
-  lu.analyzePattern(a);
-  lu.factorize(a);
+  factorize_ordered(lu, a);
   CompactLU compact(lu);
   CHECK(compact.refactorization_pays());  // a grid's factors fill in sparsely
   REQUIRE(compact.refactorize(other));
@@ -85,8 +89,7 @@ TEST_CASE("CompactLU::refactorize refuses what the kept structure cannot hold", 
   SECTION("an entry outside the pattern") {
     const SparseMatrix a = grid_system(6, 0.0);
     SymmetricOrderedLU lu;
-    lu.analyzePattern(a);
-    lu.factorize(a);
+    factorize_ordered(lu, a);
     CompactLU compact(lu);
     // A coupling between the grid's first and last unknowns: outside the
     // factors' fill.
@@ -106,8 +109,7 @@ TEST_CASE("CompactLU::refactorize refuses what the kept structure cannot hold", 
     a.makeCompressed();
     singular.makeCompressed();
     SymmetricOrderedLU lu;
-    lu.analyzePattern(a);
-    lu.factorize(a);
+    factorize_ordered(lu, a);
     CompactLU compact(lu);
     CHECK_FALSE(compact.refactorize(singular));
     CHECK_FALSE(compact.refactorize(SparseMatrix(3, 3)));  // another size
@@ -117,9 +119,7 @@ TEST_CASE("CompactLU::refactorize refuses what the kept structure cannot hold", 
 TEST_CASE("SymmetricOrderedLU orders rows and columns alike and fills less than COLAMD", "[compact_lu]") {
   const SparseMatrix a = grid_system(20, 1.0);
   SymmetricOrderedLU lu;
-  lu.analyzePattern(a);
-  lu.factorize(a);
-  REQUIRE(lu.info() == Eigen::Success);
+  factorize_ordered(lu, a);
   const Eigen::MatrixX2d b = right_hand_side(int(a.rows()));
   CHECK(relative_residual(a, lu.solve(b), b) < 1e-14);
   // COLAMD, the column ordering used before (compact_lu.h).
