@@ -934,8 +934,10 @@ std::vector<Item> resample(const Track& s, const Track& t, const ChainMatch& mat
 }
 
 /// Where a place lies in the figure: its vertex, or a dummy on an edge.
+/// `slot` (if not -1) is the track's edge the place must lie on: the one
+/// between its neighbours in the matched sequence (dummy_slots).
 MatchedPlace matched_place(const StickFigure& figure, const Track& track, const Place& place, Vec2& position,
-                           char* track_runs_along = nullptr) {
+                           char* track_runs_along = nullptr, int slot = -1) {
   MatchedPlace result;
   if (place.vertex >= 0) {
     result.vertex = place.vertex;
@@ -943,6 +945,18 @@ MatchedPlace matched_place(const StickFigure& figure, const Track& track, const 
     return result;
   }
   auto [k, f] = locate(track, place.p);
+  if (slot >= 0 && k != std::size_t(slot)) {
+    // The parameter fell on a neighbouring edge: edges shorter than the
+    // rounding of the arc length around them have the same arc values, and
+    // locate takes the last. On the right edge, as near the parameter as
+    // the arc allows (separate_on_edges parts it from the edge's ends).
+    k = std::size_t(slot);
+    double u = place.p;
+    if (track.closed) u -= std::floor(u);
+    const double at = std::clamp(u, 0.0, 1.0) * track.length();
+    const double span = track.arc[k + 1] - track.arc[k];
+    f = span > 0 ? std::clamp((at - track.arc[k]) / span, 0.0, 1.0) : 0.5;
+  }
   const int a = track.vertices[k];
   const int edge = track.edges[k];
   // Reported along edges[edge] as listed.
@@ -953,6 +967,54 @@ MatchedPlace matched_place(const StickFigure& figure, const Track& track, const 
   const Edge& e = figure.edges[std::size_t(edge)];
   position = point_on(figure.vertices[std::size_t(e[0])], figure.vertices[std::size_t(e[1])], result.fraction);
   return result;
+}
+
+/// Per item, the edge of `track` (its slot) that the item's place on this
+/// side must lie on when it is not one of the track's vertices (-1 where it
+/// is, or where the neighbours do not pin one edge down): the edge between
+/// the nearest items before and after it that are the track's vertices, or
+/// the chain's end nodes. The parameters alone cannot tell where edges are
+/// shorter than the rounding of the arc length (a 10^37-long drawing with
+/// vertices 10^20 apart: fuzz_correspond_pair), and a dummy on the wrong
+/// side of a vertex breaks the subdivision. `vertex_of(item)` is the item's
+/// vertex on this side or -1; `reversed` when the items run the track
+/// backwards.
+template <class VertexOf>
+std::vector<int> dummy_slots(const Track& track, std::size_t figure_vertices, const std::vector<Item>& items,
+                             const VertexOf& vertex_of, bool reversed) {
+  const int n = int(track.vertices.size());
+  std::vector<int> slot_of(figure_vertices, -1);
+  for (int k = 0; k < n; ++k) slot_of[std::size_t(track.vertices[std::size_t(k)])] = k;
+  std::vector<int> vertex_slot(items.size(), -1);
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const int v = vertex_of(items[k]);
+    if (v >= 0) vertex_slot[k] = slot_of[std::size_t(v)];
+  }
+  std::vector<int> slots(items.size(), -1);
+  const int m = int(items.size());
+  // The slots of the track's vertices before and after item k in the
+  // sequence: a chain starts at one end node and stops at the other, a loop
+  // wraps round.
+  const int start = reversed ? n - 1 : 0, stop = reversed ? 0 : n - 1;
+  for (int k = 0; k < m; ++k) {
+    if (vertex_slot[std::size_t(k)] >= 0) continue;
+    int before = -1, after = -1;
+    for (int j = k - 1; j >= 0 && before < 0; --j) before = vertex_slot[std::size_t(j)];
+    for (int j = k + 1; j < m && after < 0; ++j) after = vertex_slot[std::size_t(j)];
+    if (track.closed) {
+      for (int j = m - 1; j > k && before < 0; --j) before = vertex_slot[std::size_t(j)];
+      for (int j = 0; j < k && after < 0; ++j) after = vertex_slot[std::size_t(j)];
+      if (before < 0 || after < 0) continue;
+      if (!reversed && (before + 1) % n == after) slots[std::size_t(k)] = before;
+      if (reversed && (after + 1) % n == before) slots[std::size_t(k)] = after;
+    } else {
+      if (before < 0) before = start;
+      if (after < 0) after = stop;
+      if (!reversed && before + 1 == after) slots[std::size_t(k)] = before;
+      if (reversed && after + 1 == before) slots[std::size_t(k)] = after;
+    }
+  }
+  return slots;
 }
 
 /// Points placed inside one edge (dummies on a source edge, or source
@@ -1131,10 +1193,16 @@ FigureCorrespondence correspond_connected(const StickFigure& source, const Stick
     std::vector<MatchedPlace> source_side(items.size()), target_side(items.size());
     std::vector<Vec2> source_side_at(items.size()), target_side_at(items.size());
     std::vector<char> source_along(items.size(), 1), target_along(items.size(), 1);
+    const std::vector<int> source_slots = dummy_slots(
+        st, source.vertices.size(), items, [](const Item& item) { return item.source.vertex; }, false);
+    const std::vector<int> target_slots = dummy_slots(
+        tt, target.vertices.size(), items, [](const Item& item) { return item.target.vertex; }, anchored.reversed);
     for (std::size_t k = 0; k < items.size(); ++k) {
       if (items[k].source.vertex < 0)
-        source_side[k] = matched_place(source, st, items[k].source, source_side_at[k], &source_along[k]);
-      target_side[k] = matched_place(target, tt, items[k].target, target_side_at[k], &target_along[k]);
+        source_side[k] =
+            matched_place(source, st, items[k].source, source_side_at[k], &source_along[k], source_slots[k]);
+      target_side[k] =
+          matched_place(target, tt, items[k].target, target_side_at[k], &target_along[k], target_slots[k]);
     }
     separate_on_edges(source, source_side, source_side_at, source_along);
     separate_on_edges(target, target_side, target_side_at, target_along);

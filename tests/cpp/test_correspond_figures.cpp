@@ -776,3 +776,32 @@ TEST_CASE("morph_stick_figures with correspond = Auto morphs the matched figure"
   by_index.pins = {{1, 2}};
   CHECK_THROWS_AS(morph_stick_figures(plus_sign(), plus_sign(), by_index), InvalidArgumentError);
 }
+
+TEST_CASE("a dummy lands on the edge between its neighbours where edges are shorter than the arc's rounding",
+          "[correspond_figures]") {
+  // fuzz_correspond_pair's finding: a target stroke of length ~1e39 whose
+  // last edges, near (1.06e37, 0), are 1e20 to 1e23 long, below the
+  // rounding of the arc length there, so that several vertices share one
+  // arc value. The source's middle vertex falls between target vertices 9
+  // and 10; by its parameter alone it was put on edge (2, 1), past vertex
+  // 1, and the matched edges no longer subdivided the target.
+  const StickFigure source = make_stick_figure(
+      {{5.231841391409429e+39, 2.1267647932558654e+38}, {4.253529586511731e+37, 0.0},
+       {2.084229497390748e+39, 1.9566236097953962e+39}},
+      {{1, 0}, {2, 1}});
+  const StickFigure target = make_stick_figure(
+      {{1.3079603478523572e+39, 5.3169119831396635e+37}, {1.0633823966279327e+37, 0.0},
+       {5.21057374347687e+38, 4.8915590244884904e+38}, {1.568178709424072e+37, 2.068837347525161e+35},
+       {4.585171458275706e+37, 1.4433561728064644e+36}, {1.0653465846154662e+37, 8.049950768580393e+32},
+       {1.063390039382748e+37, 3.1322765636499586e+30}, {1.0633824263662784e+37, 1.2187846551167155e+28},
+       {1.063382396743646e+37, 4.742352743644808e+25}, {1.063382396628383e+37, 1.845273441106929e+23},
+       {1.0633823966279344e+37, 718005230002696093696.0}},
+      {{1, 10}, {2, 1}, {3, 4}, {4, 0}, {5, 3}, {6, 5}, {7, 6}, {8, 7}, {9, 8}, {10, 9}});
+  const FigureCorrespondence c = correspond_figures(source, target);
+  CHECK(is_valid(c, source, target));
+  CHECK(check_compatibility(c.source, c.target).compatible());
+  // Source vertex 1's image: a dummy on target edge 9, (10, 9).
+  REQUIRE(c.target_places.size() > 1);
+  CHECK(c.target_places[1].vertex == -1);
+  CHECK(c.target_places[1].edge == 9);
+}
