@@ -106,6 +106,8 @@ class CompactLU {
   // refactorize()'s: the inverse of P_c, and scratch (a dense column and
   // the stamp of the column whose pattern holds each row).
   std::size_t updates_ = 0;
+  bool upper_sorted_ = false;  // U's columns in row order (refactorize's need)
+  void sort_upper_columns();
   std::vector<int> pc_inverse_;
   std::vector<double> work_;
   std::vector<int> stamp_;
