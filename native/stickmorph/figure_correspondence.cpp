@@ -990,29 +990,37 @@ std::vector<int> dummy_slots(const Track& track, std::size_t figure_vertices, co
     const int v = vertex_of(items[k]);
     if (v >= 0) vertex_slot[k] = slot_of[std::size_t(v)];
   }
-  std::vector<int> slots(items.size(), -1);
   const int m = int(items.size());
-  // The slots of the track's vertices before and after item k in the
-  // sequence: a chain starts at one end node and stops at the other, a loop
-  // wraps round.
-  const int start = reversed ? n - 1 : 0, stop = reversed ? 0 : n - 1;
-  for (int k = 0; k < m; ++k) {
-    if (vertex_slot[std::size_t(k)] >= 0) continue;
-    int before = -1, after = -1;
-    for (int j = k - 1; j >= 0 && before < 0; --j) before = vertex_slot[std::size_t(j)];
-    for (int j = k + 1; j < m && after < 0; ++j) after = vertex_slot[std::size_t(j)];
-    if (track.closed) {
-      for (int j = m - 1; j > k && before < 0; --j) before = vertex_slot[std::size_t(j)];
-      for (int j = 0; j < k && after < 0; ++j) after = vertex_slot[std::size_t(j)];
-      if (before < 0 || after < 0) continue;
-      if (!reversed && (before + 1) % n == after) slots[std::size_t(k)] = before;
-      if (reversed && (after + 1) % n == before) slots[std::size_t(k)] = after;
-    } else {
-      if (before < 0) before = start;
-      if (after < 0) after = stop;
-      if (!reversed && before + 1 == after) slots[std::size_t(k)] = before;
-      if (reversed && after + 1 == before) slots[std::size_t(k)] = after;
+  // The slots of the track's vertices before and after each item in the
+  // sequence, in one pass each way (a long run of dummies between two
+  // vertices must not be walked once per dummy): a chain starts at one end
+  // node and stops at the other, a loop wraps round, so its first items
+  // follow its last vertex and its last items precede its first.
+  const int none = -1;
+  int last_vertex = none, first_vertex = none;
+  for (int k = 0; k < m; ++k)
+    if (vertex_slot[std::size_t(k)] >= 0) {
+      if (first_vertex == none) first_vertex = vertex_slot[std::size_t(k)];
+      last_vertex = vertex_slot[std::size_t(k)];
     }
+  std::vector<int> before(items.size()), after(items.size());
+  int seen = track.closed ? last_vertex : (reversed ? n - 1 : 0);
+  for (int k = 0; k < m; ++k) {
+    before[std::size_t(k)] = seen;
+    if (vertex_slot[std::size_t(k)] >= 0) seen = vertex_slot[std::size_t(k)];
+  }
+  seen = track.closed ? first_vertex : (reversed ? 0 : n - 1);
+  for (int k = m - 1; k >= 0; --k) {
+    after[std::size_t(k)] = seen;
+    if (vertex_slot[std::size_t(k)] >= 0) seen = vertex_slot[std::size_t(k)];
+  }
+  std::vector<int> slots(items.size(), -1);
+  for (int k = 0; k < m; ++k) {
+    const int b = before[std::size_t(k)], a = after[std::size_t(k)];
+    if (vertex_slot[std::size_t(k)] >= 0 || b < 0 || a < 0) continue;
+    // One edge apart along the track, in the items' direction.
+    const int next = track.closed ? (b + (reversed ? n - 1 : 1)) % n : b + (reversed ? -1 : 1);
+    if (next == a) slots[std::size_t(k)] = reversed ? a : b;
   }
   return slots;
 }
