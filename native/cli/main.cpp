@@ -31,7 +31,7 @@
 #include "stickmorph/io/result_files.h"
 #include "stickmorph/morph_stick_figures.h"
 #include "stickmorph/svg_output.h"
-#include "result_json.h"
+#include "output_files.h"
 
 namespace stickmorph {
 namespace {
@@ -190,32 +190,32 @@ FigureTriangulationOptions triangulation_options(const ParsedArguments& argument
   return options;
 }
 
-// The output files a command will write (-o and --svg), checked before any
-// work so that a typo in a folder name fails at once, not after the morph.
-// Returns the --svg path or nullptr.
-const std::string* check_outputs(const ParsedArguments& arguments, std::string_view command,
+// The output files a command will write (-o and, if given, --svg), resolved
+// and checked before any work against each other and against the two input
+// files, so that a typo in a folder name or an output naming an input fails
+// at once, not after the morph (output_files.h).
+// Every command here reads SOURCE.json and TARGET.json.
+cli::OutputFiles prepare_outputs(const ParsedArguments& arguments, std::string_view command,
                                  const std::string& output) {
-  cli::check_output_path("--output", output);
-  const std::string* svg = option_value(arguments, "--svg");
-  if (svg == nullptr) return nullptr;
-  cli::check_output_path("--svg", *svg);
-  if (*svg == output)
-    throw InvalidArgumentError(std::string(command) + ": --svg and --output name the same file " + single_quoted(output));
-  return svg;
+  std::vector<cli::NamedPath> outputs{{"--output", output}};
+  if (const std::string* svg = option_value(arguments, "--svg")) outputs.push_back({"--svg", *svg});
+  return cli::OutputFiles(std::string(command), outputs,
+                          {{"SOURCE.json", arguments.positional[0]}, {"TARGET.json", arguments.positional[1]}});
 }
 
 int run_triangulate(const ParsedArguments& arguments) {
   const std::string& output = required_option(arguments, "triangulate", "--output");
-  const std::string* svg = check_outputs(arguments, "triangulate", output);
+  cli::OutputFiles outputs = prepare_outputs(arguments, "triangulate", output);
+  const std::string* svg = option_value(arguments, "--svg");
   const FigureTriangulationOptions options = triangulation_options(arguments);
   const StickFigure source = read_figure_file(arguments.positional[0]);
   const StickFigure target = read_figure_file(arguments.positional[1]);
   const FigureTriangulation triangulation = triangulate_figures(source, target, options);
-  std::vector<cli::OutputFile> files{{output, triangulation_file_json(triangulation)}};
+  std::vector<std::string> files{triangulation_file_json(triangulation)};
   if (svg)
-    files.push_back({*svg, triangulation_svg(triangulation, source,
-                                             "stickmorph triangulate --steiner " + steiner_method_name(options.method))});
-  cli::write_files_atomically(files);
+    files.push_back(
+        triangulation_svg(triangulation, source, "stickmorph triangulate --steiner " + steiner_method_name(options.method)));
+  outputs.commit(files);
   return kExitSuccess;
 }
 
@@ -267,7 +267,8 @@ std::string morph_document(const StickFigure& source, const MorphStickFiguresRes
 
 int run_morph(const ParsedArguments& arguments) {
   const std::string& output = required_option(arguments, "morph", "--output");
-  const std::string* svg = check_outputs(arguments, "morph", output);
+  cli::OutputFiles outputs = prepare_outputs(arguments, "morph", output);
+  const std::string* svg = option_value(arguments, "--svg");
   const bool overlay = option_value(arguments, "--svg-triangulation") != nullptr;
   const bool compare_linear = option_value(arguments, "--svg-compare-linear") != nullptr;
   MorphStickFiguresOptions options;
@@ -312,7 +313,7 @@ int run_morph(const ParsedArguments& arguments) {
                             " -> " + (target.name.empty() ? arguments.positional[1] : target.name);
 
   const MorphStickFiguresResult result = morph_stick_figures(source, target, options);
-  std::vector<cli::OutputFile> files{{output, morph_document(source, result, options)}};
+  std::vector<std::string> files{morph_document(source, result, options)};
   // The figure the frames are of: the matched one with --correspond auto.
   const StickFigure& drawn = result.correspondence ? result.correspondence->source : source;
   if (svg && compare_linear) {
@@ -322,26 +323,26 @@ int run_morph(const ParsedArguments& arguments) {
     const MorphStickFiguresResult straight =
         result.correspondence ? morph_stick_figures(result.correspondence->source, result.correspondence->target, linear)
                               : morph_stick_figures(source, target, linear);
-    files.push_back({*svg, comparison_filmstrip_svg(drawn, result.frames, straight.frames, result.times, 7,
-                                                    straight.stats.invalid_frames, title)});
+    files.push_back(comparison_filmstrip_svg(drawn, result.frames, straight.frames, result.times, 7,
+                                             straight.stats.invalid_frames, title));
   } else if (svg) {
-    files.push_back({*svg, filmstrip_svg(drawn, overlay ? result.node_frames : result.frames, result.times, 7,
-                                         overlay ? &*result.triangulation : nullptr, title)});
+    files.push_back(filmstrip_svg(drawn, overlay ? result.node_frames : result.frames, result.times, 7,
+                                  overlay ? &*result.triangulation : nullptr, title));
   }
-  cli::write_files_atomically(files);
+  outputs.commit(files);
   return kExitSuccess;
 }
 
 int run_correspond(const ParsedArguments& arguments) {
   const std::string& output = required_option(arguments, "correspond", "--output");
-  cli::check_output_path("--output", output);
+  cli::OutputFiles outputs = prepare_outputs(arguments, "correspond", output);
   Matching matching = matching_options(arguments, "correspond", CorrespondenceMode::Auto);
   const StickFigure source = read_figure_file(arguments.positional[0]);
   const StickFigure target = read_figure_file(arguments.positional[1]);
   CorrespondenceOptions options;
   options.pins = std::move(matching.pins);
   const FigureCorrespondence correspondence = correspond_figures(source, target, options);
-  cli::write_files_atomically({{output, correspondence_file_json(correspondence)}});
+  outputs.commit({correspondence_file_json(correspondence)});
   return kExitSuccess;
 }
 
@@ -567,14 +568,34 @@ bool parse_arguments(const CommandSpec& command, const std::vector<std::string>&
   for (std::size_t k = 0; k < files.size(); ++k)
     app.add_option(std::string(command.positional_names[k]), files[k])->required();
 
-  const auto options_end = std::find(arguments.begin(), arguments.end(), std::string("--"));
-  std::vector<std::string> reversed(arguments.rbegin(), arguments.rend());  // CLI11 pops from the back
+  // "-o=x.json" is "-o x.json", as "--output=x.json" is: CLI11 would take
+  // "=x.json" as the value and write a file of that name.
+  std::vector<std::string> split;
+  bool options_over = false;
+  for (const std::string& argument : arguments) {
+    options_over = options_over || argument == "--";
+    const OptionSpec* joined = nullptr;
+    if (!options_over)
+      for (const OptionSpec& option : command.options)
+        if (!option.short_name.empty() && argument.size() > option.short_name.size() &&
+            argument.compare(0, option.short_name.size(), option.short_name) == 0 &&
+            argument[option.short_name.size()] == '=')
+          joined = &option;
+    if (joined == nullptr) {
+      split.push_back(argument);
+      continue;
+    }
+    split.push_back(std::string(joined->short_name));
+    split.push_back(argument.substr(joined->short_name.size() + 1));
+  }
+  const auto options_end = std::find(split.begin(), split.end(), std::string("--"));
+  std::vector<std::string> reversed(split.rbegin(), split.rend());  // CLI11 pops from the back
   try {
     app.parse(reversed);
   } catch (const CLI::CallForHelp&) {
     return false;
   } catch (const CLI::ArgumentMismatch& error) {
-    fail_mismatch(command, arguments, error);
+    fail_mismatch(command, split, error);
   } catch (const CLI::RequiredError&) {
     for (std::size_t k = 0; k < files.size(); ++k)
       if (app.get_option(std::string(command.positional_names[k]))->count() == 0)
@@ -583,7 +604,7 @@ bool parse_arguments(const CommandSpec& command, const std::vector<std::string>&
   } catch (const CLI::ExtrasError&) {
     // The first argument CLI11 could not place, in command-line order.
     const std::string first = app.remaining().front();
-    if (first.size() > 1 && first[0] == '-' && std::find(arguments.begin(), options_end, first) != options_end)
+    if (first.size() > 1 && first[0] == '-' && std::find(split.begin(), options_end, first) != options_end)
       fail_usage(command, "unknown option " + single_quoted(first.substr(0, first.find('='))));
     fail_usage(command, "unexpected extra argument " + single_quoted(first));
   } catch (const CLI::ParseError& error) {
@@ -603,7 +624,7 @@ bool parse_arguments(const CommandSpec& command, const std::vector<std::string>&
   // promises that before "--" every argument starting with '-' (but "-")
   // is an option.
   for (const std::string& file : files)
-    if (file.size() > 1 && file[0] == '-' && std::find(arguments.begin(), options_end, file) != options_end)
+    if (file.size() > 1 && file[0] == '-' && std::find(split.begin(), options_end, file) != options_end)
       fail_usage(command, "unknown option " + single_quoted(file.substr(0, file.find('='))));
   for (std::size_t k = 0; k < files.size(); ++k) {
     // "" would otherwise surface as ": cannot read file", naming nothing.

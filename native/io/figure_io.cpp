@@ -8,6 +8,10 @@
 #include <cstring>
 #include <memory>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include "stickmorph/errors.h"
 #include "stickmorph/io/json.h"
 
@@ -159,31 +163,57 @@ StickFigure parse_figure(const std::string& text, const std::string& origin) {
   }
 }
 
+namespace {
+
+// The kind of a non-regular file, for the message that refuses it.
+const char* file_kind(mode_t mode) {
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+}  // namespace
+
 StickFigure read_figure_file(const std::string& path) {
   const auto fail = [&path](int error_number) {
     throw FileError(path, error_number, path + ": cannot read file: " + std::strerror(error_number));
   };
-  struct CloseFile {
-    void operator()(std::FILE* file) const { std::fclose(file); }
-  };
+  // O_NONBLOCK so that opening a FIFO returns at once instead of waiting
+  // for a writer; fstat on what was opened (not stat on the name, which a
+  // race could swap) then refuses anything but a regular file: a FIFO, a
+  // socket or a device could block a read forever or never end (/dev/zero).
   errno = 0;
-  const std::unique_ptr<std::FILE, CloseFile> file(std::fopen(path.c_str(), "rb"));
-  if (!file) fail(errno != 0 ? errno : EIO);
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0) fail(errno != 0 ? errno : EIO);
+  struct CloseDescriptor {
+    int fd;
+    ~CloseDescriptor() { ::close(fd); }
+  } closer{fd};
+  struct stat info {};
+  if (::fstat(fd, &info) != 0) fail(errno);
+  if (S_ISDIR(info.st_mode)) fail(EISDIR);
+  if (!S_ISREG(info.st_mode))
+    throw FileError(path, EINVAL,
+                    path + ": cannot read file: " + file_kind(info.st_mode) + ", not a regular file");
+  if (info.st_size > 0 && std::uint64_t(info.st_size) > kMaxFigureFileBytes)
+    throw FileError(path, EFBIG, path + ": cannot read file: larger than " +
+                    std::to_string(kMaxFigureFileBytes >> 20) + " MiB");
   std::string text;
   char buffer[1 << 16];
   while (true) {
-    errno = 0;
-    const std::size_t count = std::fread(buffer, 1, sizeof buffer, file.get());
-    text.append(buffer, count);
+    const ssize_t count = ::read(fd, buffer, sizeof buffer);
+    if (count < 0) {
+      if (errno == EINTR) continue;
+      fail(errno);
+    }
+    if (count == 0) break;
+    text.append(buffer, std::size_t(count));
+    // Checked while reading too: a file can grow after fstat.
     if (text.size() > kMaxFigureFileBytes) {
       throw FileError(path, EFBIG, path + ": cannot read file: larger than " +
                       std::to_string(kMaxFigureFileBytes >> 20) + " MiB");
-    }
-    if (count < sizeof buffer) {
-      // On Linux fopen succeeds on a directory and fread fails with EISDIR,
-      // which lands here as "Is a directory".
-      if (std::ferror(file.get())) fail(errno != 0 ? errno : EIO);
-      break;
     }
   }
   return parse_figure(text, path);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <sstream>
@@ -12,16 +13,56 @@ namespace {
 constexpr double kPanel = 320;   // panel size in SVG units
 constexpr double kMargin = 16;
 
+// Length of the well-formed UTF-8 sequence at text[at] whose code point
+// XML 1.0 allows in character data (section 2.2: no C0 control but tab,
+// line feed and carriage return, no surrogates, no U+FFFE or U+FFFF), or 0.
+std::size_t xml_character_length(const std::string& text, std::size_t at) {
+  const auto byte = [&text](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char lead = byte(at);
+  if (lead < 0x80) return lead >= 0x20 || lead == '\t' || lead == '\n' || lead == '\r' ? 1 : 0;
+  std::size_t length = 0;
+  std::uint32_t code = 0;
+  if (lead >= 0xC2 && lead <= 0xDF) length = 2, code = lead & 0x1F;
+  else if (lead >= 0xE0 && lead <= 0xEF) length = 3, code = lead & 0x0F;
+  else if (lead >= 0xF0 && lead <= 0xF4) length = 4, code = lead & 0x07;
+  else return 0;
+  if (at + length > text.size()) return 0;
+  for (std::size_t k = 1; k < length; ++k) {
+    if ((byte(at + k) & 0xC0) != 0x80) return 0;
+    code = (code << 6) | (byte(at + k) & 0x3F);
+  }
+  const std::uint32_t least[] = {0, 0, 0x80, 0x800, 0x10000};
+  if (code < least[length] || code > 0x10FFFF) return 0;          // overlong or beyond Unicode
+  if ((code >= 0xD800 && code <= 0xDFFF) || code == 0xFFFE || code == 0xFFFF) return 0;
+  return length;
+}
+
+// Text for an SVG element (names and file paths echoed from the input).
+// Markup characters become entities; what XML cannot hold at all, even as
+// a character reference (C0 controls, invalid UTF-8), is shown as \xNN,
+// as the CLI's error lines show it, so that every SVG written parses.
 std::string escape(const std::string& text) {
   std::string out;
-  for (char c : text) {
+  for (std::size_t at = 0; at < text.size();) {
+    const char c = text[at];
     switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '<': out += "&lt;"; ++at; continue;
+      case '>': out += "&gt;"; ++at; continue;
+      case '&': out += "&amp;"; ++at; continue;
+      case '"': out += "&quot;"; ++at; continue;
+      case '\'': out += "&apos;"; ++at; continue;
+      default: break;
     }
+    const std::size_t length = xml_character_length(text, at);
+    if (length == 0) {
+      char shown[8];
+      std::snprintf(shown, sizeof shown, "\\x%02X", static_cast<unsigned>(static_cast<unsigned char>(c)));
+      out += shown;
+      ++at;
+      continue;
+    }
+    out.append(text, at, length);
+    at += length;
   }
   return out;
 }

@@ -42,7 +42,8 @@ sm::MorphStickFiguresOptions to_morph_options(const py::object& frames, const py
   // Here rather than only in the engine so that the message quotes a Python
   // int beyond long long as given.
   options.frames = sm::check_frames(to_count(frames, "frames"), kKeyword, py::str(frames));
-  options.method = sm::parse_morph_method(to_name(method, "method"));
+  // None is the default, as for every other option.
+  if (!method.is_none()) options.method = sm::parse_morph_method(to_name(method, "method"));
   if (!steiner.is_none()) options.steiner = sm::parse_steiner_method(to_name(steiner, "steiner"));
   if (!weights.is_none()) options.weights = sm::parse_weight_kind(to_name(weights, "weights"));
   if (!verify.is_none()) options.verify = to_flag(verify, "verify");
@@ -238,7 +239,16 @@ double to_time(const py::object& object) {
       py::isinstance<py::str>(object))
     throw sm::InvalidArgumentError("t must be a number in [0, 1], got " +
                                    py::str(py::type::of(object).attr("__name__")).cast<std::string>());
-  const double t = py::float_(object).cast<double>();
+  double t = 0;
+  try {
+    t = py::float_(object).cast<double>();
+  } catch (py::error_already_set&) {
+    // An array of several values has __float__ but refuses it (TypeError).
+    throw sm::InvalidArgumentError("t must be one number in [0, 1], got " +
+                                   py::str(py::type::of(object).attr("__name__")).cast<std::string>() +
+                                   (py::hasattr(object, "shape") ? " of shape " + py::str(object.attr("shape")).cast<std::string>()
+                                                                  : std::string()));
+  }
   if (!(t >= 0 && t <= 1))
     throw sm::InvalidArgumentError("t must be in [0, 1], got " + py::repr(py::float_(t)).cast<std::string>());
   return t;

@@ -70,6 +70,7 @@ py::handle g_invalid_figure_error;
 py::handle g_invalid_argument_error;
 py::handle g_incompatible_figures_error;
 py::handle g_verification_error;
+py::handle g_numeric_range_error;
 py::handle g_internal_error;
 py::handle g_file_error;
 // errno -> the FileError subclass that also derives from the matching
@@ -205,6 +206,8 @@ void translate_exception(std::exception_ptr pointer) {
     PyErr_SetObject(g_incompatible_figures_error.ptr(), instance.ptr());
   } catch (const sm::VerificationError& e) {
     raise_with_message(g_verification_error, e.what());
+  } catch (const sm::NumericRangeError& e) {
+    raise_with_message(g_numeric_range_error, e.what());
   } catch (const sm::InternalError& e) {
     raise_with_message(g_internal_error, e.what());
   } catch (const sm::Error& e) {
@@ -251,6 +254,11 @@ void bind_errors(py::module_& m) {
       m, "VerificationError", g_stickmorph_error,
       "A result failed exact verification and could not be repaired, so none is returned; the "
       "message names the face and the triangle.");
+  g_numeric_range_error = new_exception(
+      m, "NumericRangeError", g_stickmorph_error,
+      "A pair whose coordinates the engine's floating-point stages cannot carry (for example\n"
+      "source and target sizes further apart than the method resolves); the message names the\n"
+      "ratio or magnitude and the supported limit.");
   // Not a StickMorphError: it is never the caller's fault, so code catching
   // ValueError for bad input must not swallow it.
   g_internal_error = new_exception(

@@ -28,8 +28,24 @@ double corner_angle(const Vec2& u, const Vec2& v, const Vec2& w, bool same_edge)
   // are accurate to a few ulps of |a||b| and the angle to a few ulps of pi;
   // the exact class then places it below or above pi. Computing the sweep
   // from two atan2 values instead can wrap a near-0 angle to 2*pi.
-  const double ax = u[0] - v[0], ay = u[1] - v[1];
-  const double bx = w[0] - v[0], by = w[1] - v[1];
+  double ax = u[0] - v[0], ay = u[1] - v[1];
+  double bx = w[0] - v[0], by = w[1] - v[1];
+  // The angle does not change when either direction is scaled, but its
+  // cross and dot products underflow below |a||b| ~ 1e-300 and overflow
+  // above 1e300 (a figure of size 1e-200 read as angle sum 0). Directions
+  // far from unit length are scaled by a power of two, exactly, first;
+  // others are left alone, so that ordinary figures decompose bit for bit
+  // as before.
+  const auto unit_scale = [](double& x, double& y) {
+    const double largest = std::max(std::abs(x), std::abs(y));
+    if (largest == 0) return;
+    const int exponent = std::ilogb(largest);
+    if (exponent > -400 && exponent < 400) return;
+    x = std::ldexp(x, -exponent);
+    y = std::ldexp(y, -exponent);
+  };
+  unit_scale(ax, ay);
+  unit_scale(bx, by);
   const double between = internal::angle_between(ax, ay, bx, by);
   return turn < 0 ? between : 2 * kPi - between;
 }

@@ -120,6 +120,17 @@ class IncompatibleFiguresError : public Error {
   std::vector<int> vertices_;
 };
 
+/// A pair whose numbers the engine cannot carry through its floating-point
+/// stages, refused before any work (or, for a result whose frames cannot be
+/// written back in doubles, after it): for example source and target sizes
+/// further apart than the barycentric method resolves. The message says
+/// which ratio or magnitude and the supported limit (docs/FORMAT.md,
+/// "Numeric range").
+class NumericRangeError : public Error {
+ public:
+  using Error::Error;
+};
+
 /// A result failed exact verification and could not be repaired: the engine
 /// refuses to return it. The message names the face and the triangle.
 class VerificationError : public Error {

@@ -11,6 +11,7 @@
 #include "stickmorph/compatibility.h"
 #include "stickmorph/errors.h"
 #include "stickmorph/figure_parts.h"
+#include "stickmorph/working_scale.h"
 
 namespace stickmorph {
 namespace {
@@ -269,9 +270,10 @@ GuidedMorph prepare_rigid_morph(const StickFigure& source, const StickFigure& ta
 
 namespace {
 
-// Steps 1-5 on a pair that corresponds by index; options already checked.
-MorphStickFiguresResult morph_corresponding(const StickFigure& source, const StickFigure& target,
-                                            const MorphStickFiguresOptions& options) {
+// Steps 1-5 on a pair that corresponds by index, at the scale it is given
+// in; options already checked.
+MorphStickFiguresResult morph_at_scale(const StickFigure& source, const StickFigure& target,
+                                       const MorphStickFiguresOptions& options) {
   MorphStickFiguresResult result;
   result.triangulation_options.method = options.steiner.value_or(SteinerMethod::Improved);
   result.triangulation_options.enclosure_sides =
@@ -340,6 +342,21 @@ MorphStickFiguresResult morph_corresponding(const StickFigure& source, const Sti
   if (options.keep_node_frames) result.node_frames = std::move(morphed.frames);
   result.times = std::move(morphed.times);
   result.triangulation = std::move(triangulation);
+  return result;
+}
+
+// morph_at_scale in the working scale (working_scale.h): pairs beyond the
+// numeric stages' comfortable range are morphed multiplied by an exact
+// power of two, and the results multiplied back. The straight-line morph
+// has no numeric stage to protect: its frames are verified as they are.
+MorphStickFiguresResult morph_corresponding(const StickFigure& source, const StickFigure& target,
+                                            const MorphStickFiguresOptions& options) {
+  check_numeric_range(source, target, options.method);
+  const int exponent = options.method == MorphMethod::Linear ? 0 : working_scale_exponent(source, target);
+  if (exponent == 0) return morph_at_scale(source, target, options);
+  MorphStickFiguresResult result =
+      morph_at_scale(scaled_figure(source, exponent), scaled_figure(target, exponent), options);
+  scale_result_back(result, source, exponent);
   return result;
 }
 

@@ -1,0 +1,139 @@
+#include "stickmorph/working_scale.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+#include "stickmorph/decomposition.h"
+#include "stickmorph/errors.h"
+#include "stickmorph/figure_triangulation.h"
+#include "stickmorph/frame_verification.h"
+
+namespace stickmorph {
+namespace {
+
+double largest_magnitude(const StickFigure& figure) {
+  double largest = 0;
+  for (const Vec2& p : figure.vertices) largest = std::max({largest, std::abs(p[0]), std::abs(p[1])});
+  return largest;
+}
+
+// x * 2^exponent is exact: neither x nor the product is subnormal, and the
+// product is finite (zero stays zero).
+bool scales_exactly(double x, int exponent) {
+  if (x == 0) return true;
+  const double scaled = std::ldexp(x, exponent);
+  return std::isnormal(x) && std::isnormal(scaled) && std::ldexp(scaled, -exponent) == x;
+}
+
+// Multiplies every coordinate by 2^exponent; returns whether all of them
+// were exact.
+bool scale_points(std::vector<Vec2>& points, int exponent) {
+  bool exact = true;
+  for (Vec2& p : points)
+    for (double& c : p) {
+      exact = exact && scales_exactly(c, exponent);
+      c = std::ldexp(c, exponent);
+    }
+  return exact;
+}
+
+std::string ratio_text(double ratio) { return format_double(ratio); }
+
+}  // namespace
+
+double figure_size(const StickFigure& figure) {
+  Vec2 low = figure.vertices.front(), high = figure.vertices.front();
+  for (const Vec2& p : figure.vertices)
+    for (int c = 0; c < 2; ++c) {
+      low[c] = std::min(low[c], p[c]);
+      high[c] = std::max(high[c], p[c]);
+    }
+  // Halved before subtracting: the sides of a box from -1e100 to 1e100
+  // stay finite (and sizes are only compared).
+  return 2 * std::max(high[0] / 2 - low[0] / 2, high[1] / 2 - low[1] / 2);
+}
+
+int working_scale_exponent(const StickFigure& source, const StickFigure& target) {
+  const double largest = std::max(largest_magnitude(source), largest_magnitude(target));
+  if (largest == 0) return 0;
+  const int magnitude = std::ilogb(largest);
+  if (magnitude >= -kComfortableExponent && magnitude <= kComfortableExponent) return 0;
+  const int exponent = -magnitude;
+  for (const StickFigure* figure : {&source, &target})
+    for (std::size_t v = 0; v < figure->vertices.size(); ++v)
+      for (int c = 0; c < 2; ++c)
+        if (!scales_exactly(figure->vertices[v][c], exponent))
+          throw NumericRangeError(
+              std::string(figure == &source ? "source" : "target") + " vertex " + std::to_string(v) +
+              " has coordinate " + (c == 0 ? "x" : "y") + " = " + format_double(figure->vertices[v][c]) +
+              ", too close to 0 for a pair whose largest coordinate is " + format_double(largest) +
+              ": the morph's floating-point stages cannot carry both (nonzero coordinates must be normal "
+              "doubles within a factor of 2^1022 of the largest; write 0 for a coordinate that is meant to be 0)");
+  return exponent;
+}
+
+StickFigure scaled_figure(const StickFigure& figure, int exponent) {
+  StickFigure scaled = figure;
+  // Exact by working_scale_exponent's choice: the same plane graph.
+  scale_points(scaled.vertices, exponent);
+  return scaled;
+}
+
+void check_numeric_range(const StickFigure& source, const StickFigure& target, MorphMethod method) {
+  if (method == MorphMethod::Linear) return;
+  const bool barycentric = method == MorphMethod::Barycentric;
+  const double limit = barycentric ? kMaxBarycentricSizeRatio : kMaxRigidSizeRatio;
+  const double source_size = figure_size(source), target_size = figure_size(target);
+  if (source_size == 0 || target_size == 0) return;  // a single point: nothing to resolve
+  const double ratio = std::max(source_size / target_size, target_size / source_size);
+  if (ratio <= limit) return;
+  throw NumericRangeError(
+      "the source (size " + format_double(source_size) + ") and the target (size " + format_double(target_size) +
+      ") differ in size by a factor of " + ratio_text(ratio) + ", beyond the " +
+      (barycentric ? "barycentric" : "rigid") + " method's limit of " + ratio_text(limit) +
+      (barycentric ? " (in the common enclosure the smaller figure would be too small for its frames to be solved; "
+                     "the rigid method takes ratios up to " + ratio_text(kMaxRigidSizeRatio) + ")"
+                   : " (the target mapped back onto the source's scale would carry the rounding of the larger)"));
+}
+
+void scale_result_back(MorphStickFiguresResult& result, const StickFigure& source, int exponent) {
+  if (exponent == 0) return;
+  const int back = -exponent;
+  std::vector<bool> exact(result.frames.size(), true);
+  for (std::size_t f = 0; f < result.frames.size(); ++f) exact[f] = scale_points(result.frames[f], back);
+  for (std::vector<Vec2>& nodes : result.node_frames) scale_points(nodes, back);
+  MorphStickFiguresStats& stats = result.stats;
+  for (Vec2* center : {&stats.similarity.source_center, &stats.similarity.target_center})
+    for (double& c : *center) c = std::ldexp(c, back);
+  bool triangulation_exact = true;
+  if (result.triangulation) {
+    triangulation_exact = scale_points(result.triangulation->source, back);
+    triangulation_exact = scale_points(result.triangulation->target, back) && triangulation_exact;
+  }
+  // What rounding touched is checked again as it will be written.
+  if (std::find(exact.begin(), exact.end(), false) != exact.end()) {
+    const Decomposition decomposition = decompose(source);
+    for (std::size_t f = 0; f < result.frames.size(); ++f) {
+      if (exact[f]) continue;
+      try {
+        verify_frame(source, decomposition, result.frames[f], int(f), result.times[f]);
+      } catch (const VerificationError& error) {
+        throw NumericRangeError(std::string(error.what()) +
+                                " once written at the figures' own scale, where its coordinates round below "
+                                "the smallest normal double");
+      }
+    }
+  }
+  if (!triangulation_exact) {
+    try {
+      verify_figure_triangulation(*result.triangulation, source);
+    } catch (const VerificationError& error) {
+      throw NumericRangeError(std::string("the morph's triangulation, once written at the figures' own scale, "
+                                          "where its coordinates round below the smallest normal double: ") +
+                              error.what());
+    }
+  }
+}
+
+}  // namespace stickmorph
