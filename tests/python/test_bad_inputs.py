@@ -104,6 +104,10 @@ def materialise(kind, folder):
         return str(path)
     if special == "dev_zero":
         return "/dev/zero"
+    if special == "fifo":
+        path = folder / "in.fifo"
+        os.mkfifo(path)
+        return str(path)
     if special == "empty_name":
         return ""
     if special == "nul_in_name":

@@ -4,8 +4,8 @@
 triangulation, stats) and the error contract (exit 2, one `error:` line on
 stderr); docs/CLI.md documents `triangulate`, the options and the extensions
 (--svg, --method rigid|barycentric|linear, stats.invalid_frames, stats.rigid).
-A failure must leave no output file behind, not even the temporary
-OUT.json.partial.
+A failure must leave no output file behind, not even a temporary
+(.OUT.json.XXXXXX beside it, or the OUT.json.partial of earlier versions).
 
 The default method is rigid (issue 12): the similarity between the figures
 is factored out, so its triangulation is in output space, with the target's
