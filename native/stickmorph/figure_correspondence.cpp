@@ -2,6 +2,7 @@
 // plane maps, chains resampled by arc length with dummy vertices (Surazhsky
 // & Gotsman 2001, section 6).
 #include "stickmorph/figure_correspondence.h"
+#include "stickmorph/working_scale.h"
 
 #include <algorithm>
 #include <chrono>
@@ -1723,11 +1724,36 @@ FigureCorrespondence correspond_parts(const StickFigure& source, const StickFigu
 
 }  // namespace
 
-FigureCorrespondence correspond_figures(const StickFigure& source, const StickFigure& target,
-                                        const CorrespondenceOptions& options) {
+namespace {
+
+FigureCorrespondence correspond_at_scale(const StickFigure& source, const StickFigure& target,
+                                         const CorrespondenceOptions& options) {
   const FigureParts source_parts = figure_parts(source), target_parts = figure_parts(target);
   if (source_parts.count() == 1 && target_parts.count() == 1) return correspond_connected(source, target, options);
   return correspond_parts(source, target, options, source_parts, target_parts);
+}
+
+}  // namespace
+
+FigureCorrespondence correspond_figures(const StickFigure& source, const StickFigure& target,
+                                        const CorrespondenceOptions& options) {
+  // In the morph's working scale (working_scale.h): the similarity fits and
+  // arc lengths square coordinates, which overflow for figures near 1e99
+  // (a NaN residual) and underflow near 1e-200. The match is scale-free
+  // (its residual and rotation are ratios); only the matched positions
+  // are multiplied back.
+  const int exponent = working_scale_exponent(source, target);
+  if (exponent == 0) return correspond_at_scale(source, target, options);
+  FigureCorrespondence matched =
+      correspond_at_scale(scaled_figure(source, exponent), scaled_figure(target, exponent), options);
+  for (StickFigure* figure : {&matched.source, &matched.target})
+    for (Vec2& p : figure->vertices)
+      for (double& c : p) c = std::ldexp(c, -exponent);
+  // Exact but for dummies that land within 2^-1022 of 0: checked again.
+  if (!is_valid(matched, source, target))
+    throw NumericRangeError("the matched figures, once written at the figures' own scale, are no longer valid: "
+                            "their dummy vertices round below the smallest normal double");
+  return matched;
 }
 
 bool is_valid(const FigureCorrespondence& c, const StickFigure& source, const StickFigure& target) {

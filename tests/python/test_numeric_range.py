@@ -149,3 +149,20 @@ def test_solver_time_argument_errors(data_dir):
     # None means the default for method as for every other option.
     default = stickmorph.morph(source, target, edges, frames=3, method=None)
     assert default["stats"]["method"] == "rigid"
+
+
+@pytest.mark.parametrize("size", [1e-300, 1e-100, 1e99])
+@pytest.mark.parametrize("command", ["correspond", "morph"])
+def test_correspond_auto_at_extreme_magnitudes(cli, data_dir, tmp_path, size, command):
+    # The matching runs in the working scale too: at 1e99 its similarity fit
+    # overflowed into a NaN residual ("JSON cannot represent the number NaN").
+    for name in ("letter_a", "square_with_spikes", "wheel"):
+        a, b, out = tmp_path / "a.json", tmp_path / "b.json", tmp_path / "o.json"
+        a.write_text(json.dumps(placed(figure(data_dir, name, "source"), size)))
+        b.write_text(json.dumps(placed(figure(data_dir, name, "target"), size)))
+        extra = ["--correspond", "auto", "--frames", "5"] if command == "morph" else []
+        result = subprocess.run([str(cli), command, str(a), str(b), "-o", str(out), *extra], capture_output=True,
+                                text=True, timeout=TIMEOUT_SECONDS)
+        assert result.returncode == 0, (name, result.stderr)
+        document = json.loads(out.read_text())
+        assert "correspondence" in document
