@@ -20,6 +20,7 @@
 #include "stickmorph/frame_verification.h"
 #include "stickmorph/internal/morph_topology.h"  // build_topology: the form check of a triangulation
 #include "stickmorph/morph_solver.h"
+#include "stickmorph/working_scale.h"
 #include "stickmorph/morph_stick_figures.h"
 
 namespace stickmorph::python {
@@ -274,16 +275,36 @@ py::array_t<double> solve_binding(Binding& self, const py::object& t, const py::
 // stickmorph.MorphSolver: the engine's MorphSolver with the per-frame
 // check and repair of morph_triangulation, so that a scrubbed frame is
 // verified as a morph's frame is.
+//
+// Both solvers run in the working scale (working_scale.h): a triangulation
+// or a pair beyond the numeric stages' comfortable magnitudes is solved
+// multiplied by an exact power of two, and each frame multiplied back.
+sm::FigureTriangulation scaled_triangulation(sm::FigureTriangulation triangulation, int exponent) {
+  sm::scale_points(triangulation.source, exponent);
+  sm::scale_points(triangulation.target, exponent);
+  return triangulation;
+}
+
+// The rigid pair's working scale, its size ratio checked first so that a
+// refusal names the sizes as given.
+int checked_rigid_exponent(const sm::StickFigure& source, const sm::StickFigure& target) {
+  sm::check_numeric_range(source, target, sm::MorphMethod::Rigid);
+  return sm::working_scale_exponent(source, target);
+}
+
 class MorphSolverBinding {
  public:
-  MorphSolverBinding(sm::FigureTriangulation triangulation, sm::StickFigure source, sm::WeightKind kind)
-      : tri_(std::move(triangulation)),
-        source_(std::move(source)),
+  MorphSolverBinding(const sm::FigureTriangulation& triangulation, const sm::StickFigure& source,
+                     sm::WeightKind kind)
+      : exponent_(sm::working_scale_exponent(triangulation.source, triangulation.target)),
+        tri_(scaled_triangulation(triangulation, exponent_)),
+        source_(source),
+        scaled_source_(sm::scaled_figure(source, exponent_)),
         decomposition_(sm::decompose(source_)),
         solver_(tri_, kind),
         kind_(kind) {
     // The frame certificate's precondition (frame_certificate.h).
-    sm::require_figure_edges(tri_, source_);
+    sm::require_figure_edges(tri_, scaled_source_);
   }
 
   // All node positions at t; see the docstring for the contract. The frame
@@ -292,8 +313,11 @@ class MorphSolverBinding {
     // One solve at a time: the engine solver carries state from solve to
     // solve, and the GIL is released while it runs.
     std::lock_guard<std::mutex> lock(mutex_);
-    return sm::checked_morph_frame(solver_, tri_, source_, decomposition_, t, -1, verify, "MorphSolver.solve: ")
-        .positions;
+    std::vector<sm::Vec2> positions =
+        sm::checked_morph_frame(solver_, tri_, scaled_source_, decomposition_, t, -1, verify, "MorphSolver.solve: ")
+            .positions;
+    sm::scale_frame_back(positions, exponent_, source_, decomposition_, verify, -1, t);
+    return positions;
   }
 
   int figure_vertices() const { return tri_.figure_vertices; }
@@ -304,9 +328,11 @@ class MorphSolverBinding {
   }
 
  private:
-  const sm::FigureTriangulation tri_;
+  const int exponent_;
+  const sm::FigureTriangulation tri_;  ///< in the working scale
   const sm::StickFigure source_;
-  const sm::Decomposition decomposition_;
+  const sm::StickFigure scaled_source_;
+  const sm::Decomposition decomposition_;  ///< the same at either scale
   sm::MorphSolver solver_;
   const sm::WeightKind kind_;
   std::mutex mutex_;
@@ -318,22 +344,38 @@ class RigidMorphSolverBinding {
  public:
   RigidMorphSolverBinding(const sm::StickFigure& source, const sm::StickFigure& target,
                           const sm::MorphStickFiguresOptions& options)
-      : morph_(sm::prepare_rigid_morph(source, target, options, &stats_)), n_(int(source.vertices.size())) {}
+      : exponent_(checked_rigid_exponent(source, target)),
+        source_(source),
+        decomposition_(sm::decompose(source)),
+        morph_(sm::prepare_rigid_morph(sm::scaled_figure(source, exponent_), sm::scaled_figure(target, exponent_),
+                                       options, &stats_)),
+        triangulation_(morph_.triangulation()),
+        n_(int(source.vertices.size())) {
+    sm::scale_triangulation_back(triangulation_, source_, exponent_);
+    for (sm::Vec2* center : {&stats_.similarity.source_center, &stats_.similarity.target_center})
+      for (double& c : *center) c = std::ldexp(c, -exponent_);
+  }
 
   std::vector<sm::Vec2> solve(double t, bool verify) {
     // One frame at a time: the morph keeps its blended weights between
     // calls, and the GIL is released while it runs.
     std::lock_guard<std::mutex> lock(mutex_);
-    return morph_.frame(t, -1, verify, "RigidMorphSolver.solve: ").positions;
+    std::vector<sm::Vec2> positions = morph_.frame(t, -1, verify, "RigidMorphSolver.solve: ").positions;
+    sm::scale_frame_back(positions, exponent_, source_, decomposition_, verify, -1, t);
+    return positions;
   }
 
   int figure_vertices() const { return n_; }
-  const sm::FigureTriangulation& triangulation() const { return morph_.triangulation(); }
+  const sm::FigureTriangulation& triangulation() const { return triangulation_; }
   const sm::MorphStickFiguresStats& stats() const { return stats_; }
 
  private:
+  const int exponent_;
+  const sm::StickFigure source_;
+  const sm::Decomposition decomposition_;
   sm::MorphStickFiguresStats stats_;
-  sm::GuidedMorph morph_;
+  sm::GuidedMorph morph_;  ///< in the working scale
+  sm::FigureTriangulation triangulation_;  ///< at the figures' own scale
   const int n_;
   std::mutex mutex_;
 };

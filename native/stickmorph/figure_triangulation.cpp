@@ -1,4 +1,5 @@
 #include "stickmorph/figure_triangulation.h"
+#include "stickmorph/working_scale.h"
 
 #include <algorithm>
 #include <cmath>
@@ -58,8 +59,11 @@ using internal::ms_since;
 
 }  // namespace
 
-FigureTriangulation triangulate_figures(const StickFigure& source, const StickFigure& target,
-                                        const FigureTriangulationOptions& options, FigureTriangulationStats* stats) {
+namespace {
+
+// Algorithm 3, steps 1-3, at the scale the figures are given in.
+FigureTriangulation triangulate_at_scale(const StickFigure& source, const StickFigure& target,
+                                         const FigureTriangulationOptions& options, FigureTriangulationStats* stats) {
   // The interfaces check it first (morph_stick_figures, the CLI, the
   // module); this is the same check for direct callers, in the same words.
   check_enclosure_sides(options.enclosure_sides, OptionSpelling::Keyword);
@@ -79,7 +83,7 @@ FigureTriangulation triangulate_figures(const StickFigure& source, const StickFi
     stage_start = Clock::now();
     const internal::BridgedFigures bridged = internal::bridge_parts(source, source_dec, target);
     const double bridge_ms = ms_since(stage_start);
-    FigureTriangulation joined = triangulate_figures(bridged.source, bridged.target, options, stats);
+    FigureTriangulation joined = triangulate_at_scale(bridged.source, bridged.target, options, stats);
     const int n = int(source.vertices.size()), bends = bridged.bends, k = joined.enclosure_vertices;
     // Node order of the bridged triangulation: n figure vertices, the bends,
     // the enclosure, the Steiner vertices. Wanted: the figure, the
@@ -231,6 +235,24 @@ FigureTriangulation triangulate_figures(const StickFigure& source, const StickFi
     stats->min_angle = least;
   }
   return result;
+}
+
+}  // namespace
+
+FigureTriangulation triangulate_figures(const StickFigure& source, const StickFigure& target,
+                                        const FigureTriangulationOptions& options, FigureTriangulationStats* stats) {
+  // In the working scale (working_scale.h): a pair beyond the numeric
+  // stages' comfortable magnitudes is triangulated multiplied by an exact
+  // power of two (the same plane graphs), and the nodes multiplied back.
+  const int exponent = working_scale_exponent(source, target);
+  if (exponent == 0) return triangulate_at_scale(source, target, options, stats);
+  FigureTriangulationOptions scaled_options = options;
+  // Only to be enclosed: rounding of these near 0 is harmless.
+  scale_points(scaled_options.enclosed_points, exponent);
+  FigureTriangulation triangulation = triangulate_at_scale(scaled_figure(source, exponent),
+                                                           scaled_figure(target, exponent), scaled_options, stats);
+  scale_triangulation_back(triangulation, source, exponent);
+  return triangulation;
 }
 
 void verify_figure_triangulation(const FigureTriangulation& tri, const StickFigure& source) {

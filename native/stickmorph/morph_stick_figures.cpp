@@ -258,6 +258,7 @@ GuidedMorph prepare_rigid_morph(const StickFigure& source, const StickFigure& ta
   if (options.correspond != CorrespondenceMode::ByIndex)
     throw InvalidArgumentError("prepare_rigid_morph takes figures that correspond by index: match them with "
                                "correspond_figures first and pass its source and target");
+  check_numeric_range(source, target, MorphMethod::Rigid);
   FigureTriangulationOptions paper;
   paper.method = options.steiner.value_or(SteinerMethod::Improved);
   paper.enclosure_sides = options.enclosure_sides ? int(*options.enclosure_sides) : kDefaultEnclosureSides;

@@ -34,6 +34,11 @@ using Edge = std::array<int, 2>;
 /// the morph's linear algebra does.
 constexpr double kMaxCoordinateMagnitude = 1e100;
 
+/// The nodes of a triangulation (the enclosure, Steiner vertices) may reach
+/// further than the figure's vertices: the enclosure of a figure near 1e100
+/// lies a little beyond it. Squares of this magnitude stay finite.
+constexpr double kMaxNodeMagnitude = 1e150;
+
 /// A validated stick figure.
 ///
 /// Invariants (established by make_stick_figure, checked by is_valid):

@@ -12,11 +12,6 @@
 namespace stickmorph {
 namespace {
 
-double largest_magnitude(const StickFigure& figure) {
-  double largest = 0;
-  for (const Vec2& p : figure.vertices) largest = std::max({largest, std::abs(p[0]), std::abs(p[1])});
-  return largest;
-}
 
 // x * 2^exponent is exact: neither x nor the product is subnormal, and the
 // product is finite (zero stays zero).
@@ -26,8 +21,54 @@ bool scales_exactly(double x, int exponent) {
   return std::isnormal(x) && std::isnormal(scaled) && std::ldexp(scaled, -exponent) == x;
 }
 
-// Multiplies every coordinate by 2^exponent; returns whether all of them
-// were exact.
+std::string ratio_text(double ratio) { return format_double(ratio); }
+
+double largest_magnitude(const std::vector<Vec2>& points) {
+  double largest = 0;
+  for (const Vec2& p : points) largest = std::max({largest, std::abs(p[0]), std::abs(p[1])});
+  return largest;
+}
+
+// The exponent for two point sets whose roles name them in the message.
+int exponent_for(const std::vector<Vec2>& source, const std::vector<Vec2>& target, const char* what) {
+  const double largest = std::max(largest_magnitude(source), largest_magnitude(target));
+  if (largest == 0) return 0;
+  const int magnitude = std::ilogb(largest);
+  if (magnitude >= -kComfortableExponent && magnitude <= kComfortableExponent) return 0;
+  if (magnitude < kSmallestMagnitudeExponent)
+    throw NumericRangeError("the pair's largest coordinate, " + format_double(largest) +
+                            ", is below the smallest magnitude the morph carries, 2^" +
+                            std::to_string(kSmallestMagnitudeExponent) + " = " +
+                            format_double(std::ldexp(1.0, kSmallestMagnitudeExponent)) +
+                            " (positions the morph constructs near 0 would round to subnormal doubles)");
+  const int exponent = -magnitude;
+  for (const std::vector<Vec2>* points : {&source, &target})
+    for (std::size_t v = 0; v < points->size(); ++v)
+      for (int c = 0; c < 2; ++c)
+        if (!scales_exactly((*points)[v][c], exponent))
+          throw NumericRangeError(
+              std::string(points == &source ? "source " : "target ") + what + " " + std::to_string(v) +
+              " has coordinate " + (c == 0 ? "x" : "y") + " = " + format_double((*points)[v][c]) +
+              ", too close to 0 for a pair whose largest coordinate is " + format_double(largest) +
+              ": the morph's floating-point stages cannot carry both (nonzero coordinates must be normal "
+              "doubles within a factor of 2^1022 of the largest; write 0 for a coordinate that is meant to be 0)");
+  return exponent;
+}
+
+// A frame that scaling back rounded, verified as it will be written.
+void reverify_frame(const StickFigure& source, const Decomposition& source_decomposition,
+                    const std::vector<Vec2>& figure, int frame_index, double time) {
+  try {
+    verify_frame(source, source_decomposition, figure, frame_index, time);
+  } catch (const VerificationError& error) {
+    throw NumericRangeError(std::string(error.what()) +
+                            " once written at the figures' own scale, where its coordinates round below the "
+                            "smallest normal double");
+  }
+}
+
+}  // namespace
+
 bool scale_points(std::vector<Vec2>& points, int exponent) {
   bool exact = true;
   for (Vec2& p : points)
@@ -38,9 +79,9 @@ bool scale_points(std::vector<Vec2>& points, int exponent) {
   return exact;
 }
 
-std::string ratio_text(double ratio) { return format_double(ratio); }
-
-}  // namespace
+int working_scale_exponent(const std::vector<Vec2>& source, const std::vector<Vec2>& target) {
+  return exponent_for(source, target, "node");
+}
 
 double figure_size(const StickFigure& figure) {
   Vec2 low = figure.vertices.front(), high = figure.vertices.front();
@@ -55,22 +96,7 @@ double figure_size(const StickFigure& figure) {
 }
 
 int working_scale_exponent(const StickFigure& source, const StickFigure& target) {
-  const double largest = std::max(largest_magnitude(source), largest_magnitude(target));
-  if (largest == 0) return 0;
-  const int magnitude = std::ilogb(largest);
-  if (magnitude >= -kComfortableExponent && magnitude <= kComfortableExponent) return 0;
-  const int exponent = -magnitude;
-  for (const StickFigure* figure : {&source, &target})
-    for (std::size_t v = 0; v < figure->vertices.size(); ++v)
-      for (int c = 0; c < 2; ++c)
-        if (!scales_exactly(figure->vertices[v][c], exponent))
-          throw NumericRangeError(
-              std::string(figure == &source ? "source" : "target") + " vertex " + std::to_string(v) +
-              " has coordinate " + (c == 0 ? "x" : "y") + " = " + format_double(figure->vertices[v][c]) +
-              ", too close to 0 for a pair whose largest coordinate is " + format_double(largest) +
-              ": the morph's floating-point stages cannot carry both (nonzero coordinates must be normal "
-              "doubles within a factor of 2^1022 of the largest; write 0 for a coordinate that is meant to be 0)");
-  return exponent;
+  return exponent_for(source.vertices, target.vertices, "vertex");
 }
 
 StickFigure scaled_figure(const StickFigure& figure, int exponent) {
@@ -97,6 +123,29 @@ void check_numeric_range(const StickFigure& source, const StickFigure& target, M
                    : " (the target mapped back onto the source's scale would carry the rounding of the larger)"));
 }
 
+void scale_triangulation_back(FigureTriangulation& triangulation, const StickFigure& source, int exponent) {
+  if (exponent == 0) return;
+  bool exact = scale_points(triangulation.source, -exponent);
+  exact = scale_points(triangulation.target, -exponent) && exact;
+  if (exact) return;
+  try {
+    verify_figure_triangulation(triangulation, source);
+  } catch (const VerificationError& error) {
+    throw NumericRangeError(std::string("the compatible triangulation, once written at the figures' own scale, "
+                                        "where its coordinates round below the smallest normal double: ") +
+                            error.what());
+  }
+}
+
+void scale_frame_back(std::vector<Vec2>& positions, int exponent, const StickFigure& source,
+                      const Decomposition& source_decomposition, bool verify, int frame_index, double time) {
+  if (exponent == 0) return;
+  if (scale_points(positions, -exponent) || !verify) return;
+  const std::vector<Vec2> figure(positions.begin(),
+                                 positions.begin() + std::ptrdiff_t(std::min(positions.size(), source.vertices.size())));
+  reverify_frame(source, source_decomposition, figure, frame_index, time);
+}
+
 void scale_result_back(MorphStickFiguresResult& result, const StickFigure& source, int exponent) {
   if (exponent == 0) return;
   const int back = -exponent;
@@ -106,34 +155,13 @@ void scale_result_back(MorphStickFiguresResult& result, const StickFigure& sourc
   MorphStickFiguresStats& stats = result.stats;
   for (Vec2* center : {&stats.similarity.source_center, &stats.similarity.target_center})
     for (double& c : *center) c = std::ldexp(c, back);
-  bool triangulation_exact = true;
-  if (result.triangulation) {
-    triangulation_exact = scale_points(result.triangulation->source, back);
-    triangulation_exact = scale_points(result.triangulation->target, back) && triangulation_exact;
-  }
   // What rounding touched is checked again as it will be written.
   if (std::find(exact.begin(), exact.end(), false) != exact.end()) {
     const Decomposition decomposition = decompose(source);
-    for (std::size_t f = 0; f < result.frames.size(); ++f) {
-      if (exact[f]) continue;
-      try {
-        verify_frame(source, decomposition, result.frames[f], int(f), result.times[f]);
-      } catch (const VerificationError& error) {
-        throw NumericRangeError(std::string(error.what()) +
-                                " once written at the figures' own scale, where its coordinates round below "
-                                "the smallest normal double");
-      }
-    }
+    for (std::size_t f = 0; f < result.frames.size(); ++f)
+      if (!exact[f]) reverify_frame(source, decomposition, result.frames[f], int(f), result.times[f]);
   }
-  if (!triangulation_exact) {
-    try {
-      verify_figure_triangulation(*result.triangulation, source);
-    } catch (const VerificationError& error) {
-      throw NumericRangeError(std::string("the morph's triangulation, once written at the figures' own scale, "
-                                          "where its coordinates round below the smallest normal double: ") +
-                              error.what());
-    }
-  }
+  if (result.triangulation) scale_triangulation_back(*result.triangulation, source, exponent);
 }
 
 }  // namespace stickmorph

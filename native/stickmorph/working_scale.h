@@ -26,6 +26,10 @@
 // Those pairs are refused before any work (NumericRangeError).
 #pragma once
 
+#include <vector>
+
+#include "stickmorph/decomposition.h"
+#include "stickmorph/figure_triangulation.h"
 #include "stickmorph/morph_stick_figures.h"
 #include "stickmorph/stick_figure.h"
 
@@ -49,12 +53,29 @@ constexpr int kComfortableExponent = 64;
 constexpr double kMaxBarycentricSizeRatio = 1e6;
 constexpr double kMaxRigidSizeRatio = 1e12;
 
+/// The smallest largest-coordinate a pair may have: 2^-900, about 1.2e-271.
+/// The morph's constructions put nodes at rounding noise from 0 (1e-16 of
+/// the figure's size, and less); below this, multiplying them back would
+/// make them subnormal, with too few digits left for the exact checks to
+/// pass (a triangulation of letter A at 1e-300 was refused so).
+constexpr int kSmallestMagnitudeExponent = -900;
+
 /// The exponent k of the working scale 2^k for the pair: 0 when the pair is
 /// in the comfortable range.
+/// @throws NumericRangeError when the pair's largest coordinate is nonzero
+///         and below 2^kSmallestMagnitudeExponent.
 /// @throws NumericRangeError when the pair is not and scaling some nonzero
 ///         coordinate would not be exact: it is subnormal, or more than
 ///         2^1022 times smaller than the pair's largest coordinate.
 int working_scale_exponent(const StickFigure& source, const StickFigure& target);
+
+/// The same for any two point sets (a triangulation's source and target
+/// nodes), with the same exception.
+int working_scale_exponent(const std::vector<Vec2>& source, const std::vector<Vec2>& target);
+
+/// Multiplies every coordinate by 2^exponent; returns whether every product
+/// was exact.
+bool scale_points(std::vector<Vec2>& points, int exponent);
 
 /// The figure with every coordinate multiplied by 2^exponent, which
 /// working_scale_exponent made exact: the same stick figure, not checked again.
@@ -67,6 +88,18 @@ double figure_size(const StickFigure& figure);
 /// numbers alone.
 /// @throws NumericRangeError naming both sizes, their ratio and the limit.
 void check_numeric_range(const StickFigure& source, const StickFigure& target, MorphMethod method);
+
+/// Multiplies the triangulation's node positions by 2^-exponent, and
+/// verifies it again (verify_figure_triangulation) if that was not exact.
+/// @throws NumericRangeError if it is then no longer valid.
+void scale_triangulation_back(FigureTriangulation& triangulation, const StickFigure& source, int exponent);
+
+/// A frame's positions (the figure's first) multiplied by 2^-exponent, and
+/// verified again as written (verify_frame against `source`) if that was
+/// not exact and `verify` is set.
+/// @throws NumericRangeError if it is then no longer valid.
+void scale_frame_back(std::vector<Vec2>& positions, int exponent, const StickFigure& source,
+                      const Decomposition& source_decomposition, bool verify, int frame_index, double time);
 
 /// Multiplies every position in `result` (frames, node frames, the
 /// triangulation, the similarity's centres) by 2^-exponent, and verifies

@@ -70,7 +70,7 @@ def test_extreme_pairs_morph_or_are_refused_with_a_reason(cli, data_dir, tmp_pat
         outcome = morph_cli(cli, tmp_path, source, target, method)
         if isinstance(outcome, str):
             assert any(reason in outcome for reason in
-                       ("differ in size by a factor", "too close to 0", "coincide", "overlap", "cross",
+                       ("differ in size by a factor", "too close to 0", "smallest magnitude", "coincide", "overlap", "cross",
                         "lies on", "beyond the supported magnitude")), (name, outcome)
 
 
@@ -84,7 +84,7 @@ def test_both_figures_tiny_or_huge_morph_like_at_unit_scale(data_dir, method, na
     edges = np.array(source["edges"], dtype=np.int64).reshape(-1, 2)
     unit = stickmorph.morph(np.array(source["vertices"]), np.array(target["vertices"]), edges, frames=7,
                             method=method)
-    for exponent in (-900, 300):
+    for exponent in (-890, 300):
         factor = math.ldexp(1.0, exponent)
         far = stickmorph.morph(np.array(source["vertices"]) * factor, np.array(target["vertices"]) * factor, edges,
                                frames=7, method=method)
@@ -120,9 +120,15 @@ def test_module_raises_numeric_range_error(data_dir):
     for method in ("rigid", "barycentric"):
         with pytest.raises(stickmorph.NumericRangeError, match="differ in size by a factor"):
             stickmorph.morph(np.array(source["vertices"]), np.array(target["vertices"]), edges, method=method)
-    tiny = np.array(source["vertices"]) * 1e-320
-    with pytest.raises(stickmorph.NumericRangeError, match="too close to 0"):
+    tiny = np.array(source["vertices"]) * 1e-300
+    with pytest.raises(stickmorph.NumericRangeError, match="below the smallest magnitude the morph carries"):
         stickmorph.morph(tiny, tiny * 2, edges)
+    # A coordinate far below the others cannot be carried to the working scale.
+    spread = np.array(source["vertices"]) * 1e100
+    zero = np.argwhere(spread == 0)[0]
+    spread[tuple(zero)] = 1e-300  # far below 2^-1022 times the largest
+    with pytest.raises(stickmorph.NumericRangeError, match="too close to 0"):
+        stickmorph.morph(spread, spread, edges)
 
 
 def test_check_decides_tiny_and_huge_figures(cli, data_dir, tmp_path):
@@ -151,7 +157,7 @@ def test_solver_time_argument_errors(data_dir):
     assert default["stats"]["method"] == "rigid"
 
 
-@pytest.mark.parametrize("size", [1e-300, 1e-100, 1e99])
+@pytest.mark.parametrize("size", [1e-250, 1e-100, 1e99])
 @pytest.mark.parametrize("command", ["correspond", "morph"])
 def test_correspond_auto_at_extreme_magnitudes(cli, data_dir, tmp_path, size, command):
     # The matching runs in the working scale too: at 1e99 its similarity fit
@@ -166,3 +172,42 @@ def test_correspond_auto_at_extreme_magnitudes(cli, data_dir, tmp_path, size, co
         assert result.returncode == 0, (name, result.stderr)
         document = json.loads(out.read_text())
         assert "correspondence" in document
+
+
+@pytest.mark.parametrize("factor", [1e-250, 2.0 ** -890, 1e99])
+@pytest.mark.parametrize("name", ["letter_a", "square_with_spikes", "wheel", "polyline"])
+def test_triangulation_and_solvers_in_the_working_scale(data_dir, name, factor):
+    # triangulate_figures, MorphSolver and RigidMorphSolver work in the same
+    # exact working scale as morph(): at 1e-250 the triangulation's own
+    # verification failed before ("the triangles around ... turn 0 times").
+    source = figure(data_dir, name, "source")
+    edges = np.array(source["edges"], dtype=np.int64).reshape(-1, 2)
+    a = np.array(source["vertices"], dtype=float) * factor
+    b = np.array(figure(data_dir, name, "target")["vertices"], dtype=float) * factor
+    triangulation = stickmorph.triangulate_figures(a, b, edges)
+    assert np.array_equal(np.asarray(triangulation["source"])[: len(a)], a)
+    solvers = [stickmorph.MorphSolver(triangulation, edges), stickmorph.RigidMorphSolver(a, b, edges)]
+    for solver in solvers:
+        assert np.array_equal(solver.solve(0.0), a) and np.array_equal(solver.solve(1.0), b)
+        for t in (0.25, 0.5, 0.75):
+            stickmorph.validate(solver.solve(t), edges)
+
+
+def test_rigid_solver_refuses_a_ratio_naming_the_sizes_as_given(data_dir):
+    source = figure(data_dir, "letter_a", "source")
+    edges = np.array(source["edges"], dtype=np.int64)
+    a = np.array(source["vertices"], dtype=float)
+    b = np.array(figure(data_dir, "letter_a", "target")["vertices"], dtype=float) * 1e60
+    with pytest.raises(stickmorph.NumericRangeError, match=r"and the target \(size [0-9.]+e\+60\)"):
+        stickmorph.RigidMorphSolver(a, b, edges)
+
+
+@pytest.mark.parametrize("size", [1e-250, 1e99])
+def test_triangulate_command_at_extreme_magnitudes(cli, data_dir, tmp_path, size):
+    for name in PAIRS:
+        a, b, out = tmp_path / "a.json", tmp_path / "b.json", tmp_path / "o.json"
+        a.write_text(json.dumps(placed(figure(data_dir, name, "source"), size)))
+        b.write_text(json.dumps(placed(figure(data_dir, name, "target"), size)))
+        result = subprocess.run([str(cli), "triangulate", str(a), str(b), "-o", str(out)], capture_output=True,
+                                text=True, timeout=TIMEOUT_SECONDS)
+        assert result.returncode == 0, (name, result.stderr)

@@ -48,8 +48,8 @@ Topology build_topology(const FigureTriangulation& tri) {
   for (int side = 0; side < 2; ++side)
     for (int v = 0; v < N; ++v) {
       const Vec2& p = side ? tri.target[v] : tri.source[v];
-      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || std::abs(p[0]) > kMaxCoordinateMagnitude ||
-          std::abs(p[1]) > kMaxCoordinateMagnitude)
+      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || std::abs(p[0]) > kMaxNodeMagnitude ||
+          std::abs(p[1]) > kMaxNodeMagnitude)
         malformed(node_text(tri, v) + " has a non-finite or too large position in the " +
                   (side ? "target" : "source"));
     }
