@@ -57,6 +57,20 @@ FigureCorrespondence correspond_at_scale(const StickFigure& source, const StickF
   return correspond_parts(source, target, options, source_parts, target_parts);
 }
 
+// A matched figure found in the working scale 2^exponent, written back at
+// the figures' own scale through make_stick_figure (InvalidFigureError):
+// multiplying by 2^-exponent is exact but for a dummy vertex that lands
+// within 2^-1022 of 0 and may round onto another vertex or edge.
+StickFigure figure_at_own_scale(const StickFigure& matched, int exponent) {
+  std::vector<Vec2> vertices = matched.vertices;
+  for (Vec2& p : vertices)
+    for (double& c : p) c = std::ldexp(c, -exponent);
+  std::vector<std::array<std::int64_t, 2>> edges;
+  edges.reserve(matched.edges.size());
+  for (const Edge& e : matched.edges) edges.push_back({e[0], e[1]});
+  return make_stick_figure(std::move(vertices), edges, matched.name);
+}
+
 }  // namespace
 
 FigureCorrespondence correspond_figures(const StickFigure& source, const StickFigure& target,
@@ -70,13 +84,18 @@ FigureCorrespondence correspond_figures(const StickFigure& source, const StickFi
   if (exponent == 0) return correspond_at_scale(source, target, options);
   FigureCorrespondence matched =
       correspond_at_scale(scaled_figure(source, exponent), scaled_figure(target, exponent), options);
-  for (StickFigure* figure : {&matched.source, &matched.target})
-    for (Vec2& p : figure->vertices)
-      for (double& c : p) c = std::ldexp(c, -exponent);
-  // Exact but for dummies that land within 2^-1022 of 0: checked again.
-  if (!is_valid(matched, source, target))
-    throw NumericRangeError("the matched figures, once written at the figures' own scale, are no longer valid: "
-                            "their dummy vertices round below the smallest normal double");
+  // Exact but for dummies that land within 2^-1022 of 0: the figures are
+  // rebuilt through the checked constructor, and the matching checked again.
+  const char* const below_normal =
+      "the matched figures, once written at the figures' own scale, are no longer valid: "
+      "their dummy vertices round below the smallest normal double";
+  try {
+    matched.source = figure_at_own_scale(matched.source, exponent);
+    matched.target = figure_at_own_scale(matched.target, exponent);
+  } catch (const InvalidFigureError&) {
+    throw NumericRangeError(below_normal);
+  }
+  if (!is_valid(matched, source, target)) throw NumericRangeError(below_normal);
   return matched;
 }
 

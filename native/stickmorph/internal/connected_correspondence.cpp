@@ -22,6 +22,12 @@
 
 namespace stickmorph::internal {
 
+StickFigure reflected_figure(const StickFigure& figure) {
+  std::vector<Vec2> vertices = figure.vertices;
+  for (Vec2& p : vertices) p[0] = -p[0];
+  return StickFigure{std::move(vertices), figure.edges, figure.name};
+}
+
 double milliseconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -55,8 +61,7 @@ FigureCorrespondence correspond_connected(const StickFigure& source, const Stick
     if (search.images.empty()) {
       if (!search.any_isomorphism) {
         // Reflected, would the skeletons match? Then say so.
-        StickFigure mirrored = target;
-        for (Vec2& p : mirrored.vertices) p[0] = -p[0];
+        const StickFigure mirrored = reflected_figure(target);
         const Skeleton m = make_skeleton(mirrored);
         if (search_isomorphisms(s, m, {}, {}, false).any_exterior)
           throw IncompatibleFiguresError(Incompatibility::MirrorImage,

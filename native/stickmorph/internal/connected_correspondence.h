@@ -20,6 +20,17 @@ namespace stickmorph::internal {
 FigureCorrespondence correspond_connected(const StickFigure& source, const StickFigure& target,
                                           const CorrespondenceOptions& options, double reference_rotation = 0);
 
+/// The figure reflected in the y axis (x -> -x), for telling a mirror image
+/// from another arrangement of the strokes.
+///
+/// Valid by construction, so built without make_stick_figure's checks:
+/// negating a coordinate is exact, so every coordinate stays finite and
+/// within kMaxCoordinateMagnitude and no two vertices come to coincide; a
+/// reflection reverses the sign of every orientation predicate at once, so
+/// edges that met only at shared endpoints still do; the edges are the
+/// figure's own.
+StickFigure reflected_figure(const StickFigure& figure);
+
 /// Wall-clock milliseconds since `start` (FigureCorrespondence::milliseconds).
 double milliseconds_since(std::chrono::steady_clock::time_point start);
 

@@ -32,22 +32,31 @@ struct PartFigure {
   std::vector<int> global_edge;    // local edge -> figure edge
 };
 
+// Part `part` of a valid figure as a figure of its own. Valid by
+// construction, so built without make_stick_figure's checks: its vertices
+// are some of the whole figure's, at the same coordinates, and its edges are
+// all the whole figure's edges between them (a part is a connected
+// component, so an edge with one end in it has both); a subset of the
+// vertices and edges of a plane graph with no coincident vertices, no
+// duplicate edges and no crossings has none either.
 PartFigure part_figure(const StickFigure& whole, const FigureParts& parts, int part) {
   PartFigure result;
   result.global_vertex = parts.vertices[std::size_t(part)];
   std::vector<int> local(whole.vertices.size(), -1);
+  std::vector<Vec2> vertices;
   for (std::size_t k = 0; k < result.global_vertex.size(); ++k) {
     local[std::size_t(result.global_vertex[k])] = int(k);
-    result.figure.vertices.push_back(whole.vertices[std::size_t(result.global_vertex[k])]);
+    vertices.push_back(whole.vertices[std::size_t(result.global_vertex[k])]);
   }
   // Same order and direction as in the whole figure, so that a dummy's
   // fraction along its edge means the same in both.
+  std::vector<Edge> edges;
   for (std::size_t e = 0; e < whole.edges.size(); ++e)
     if (local[std::size_t(whole.edges[e][0])] >= 0) {
-      result.figure.edges.push_back({local[std::size_t(whole.edges[e][0])], local[std::size_t(whole.edges[e][1])]});
+      edges.push_back({local[std::size_t(whole.edges[e][0])], local[std::size_t(whole.edges[e][1])]});
       result.global_edge.push_back(int(e));
     }
-  result.figure.name = whole.name;
+  result.figure = StickFigure{std::move(vertices), std::move(edges), whole.name};
   return result;
 }
 
