@@ -134,8 +134,9 @@ FigureCorrespondence correspond_connected(const StickFigure& source, const Stick
     std::vector<char> source_along(items.size(), 1), target_along(items.size(), 1);
     const std::vector<int> source_slots = dummy_slots(
         st, source.vertices.size(), items, [](const MatchedItem& item) { return item.source.vertex; }, false);
-    const std::vector<int> target_slots = dummy_slots(
-        tt, target.vertices.size(), items, [](const MatchedItem& item) { return item.target.vertex; }, anchored.reversed);
+    const std::vector<int> target_slots =
+        dummy_slots(tt, target.vertices.size(), items, [](const MatchedItem& item) { return item.target.vertex; },
+                    anchored.reversed);
     for (std::size_t k = 0; k < items.size(); ++k) {
       if (items[k].source.vertex < 0)
         source_side[k] =
