@@ -1,6 +1,14 @@
 // Automatic correspondence (figure_correspondence.h): skeletons matched as
 // plane maps, chains resampled by arc length with dummy vertices (Surazhsky
 // & Gotsman 2001, section 6).
+//
+// The public entry only: the working scale, the parsing of modes and pins,
+// and is_valid. The stages are in internal/: correspondence_skeleton (step
+// 1), plane_map_isomorphism (2), correspondence_choice (3), corner_anchors,
+// arc_length_resampling and dummy_placement (4), correspondence_track and
+// correspondence_pins (shared by them), connected_correspondence (steps 1-4
+// for one connected pair) and part_correspondence with
+// least_cost_assignment (figures of several parts, issue 14).
 #include "stickmorph/figure_correspondence.h"
 #include "stickmorph/working_scale.h"
 
