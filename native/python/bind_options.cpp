@@ -79,9 +79,10 @@ py::dict option_rules_dict() {
 void bind_options(py::module_& m) {
   m.attr("limits") = limits_dict();
   m.attr("OPTION_NAMES") = option_names_dict();
-  m.attr("METHOD_NAMES") = py::make_tuple("rigid", "barycentric", "linear");
-  m.attr("ROTATION_NAMES") = py::make_tuple("short", "ccw", "cw");
-  m.attr("EASING_NAMES") = py::make_tuple("none", "in-out");
+  // The accepted names, from the same table as option_rules.
+  m.attr("METHOD_NAMES") = names_tuple(sm::morph_option_rule(sm::Option::Method).choices);
+  m.attr("ROTATION_NAMES") = names_tuple(sm::morph_option_rule(sm::Option::Rotation).choices);
+  m.attr("EASING_NAMES") = names_tuple(sm::morph_option_rule(sm::Option::Easing).choices);
   m.attr("option_rules") = option_rules_dict();
 }
 
