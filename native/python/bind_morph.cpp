@@ -1,7 +1,8 @@
 // The morph (Algorithm 3 end to end, through the engine's
-// morph_stick_figures), the stateful solver for scrubbing any t
-// (MorphSolver), and the limits and option names the engine checks,
-// exported so that the add-on and help texts quote them instead of copies.
+// morph_stick_figures) and the stateful solvers for scrubbing any t
+// (MorphSolver, RigidMorphSolver). Their arguments become engine options in
+// morph_arguments.cpp; the limits and option rules the engine checks are
+// exported by bind_options.cpp.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
@@ -14,6 +15,7 @@
 
 #include "bindings.h"
 #include "conversions.h"
+#include "morph_arguments.h"
 #include "stickmorph/argument_limits.h"
 #include "stickmorph/decomposition.h"
 #include "stickmorph/errors.h"
@@ -25,49 +27,6 @@
 
 namespace stickmorph::python {
 namespace {
-
-constexpr sm::OptionSpelling kKeyword = sm::OptionSpelling::Keyword;
-
-// Arguments to engine options. None means "not given", so that the engine
-// can refuse what method="linear" would ignore; everything is checked before
-// the figures, as the CLI does.
-sm::MorphStickFiguresOptions to_morph_options(const py::object& frames, const py::object& steiner,
-                                              const py::object& weights, const py::object& enclosure_sides,
-                                              const py::object& method, const py::object& verify,
-                                              const py::object& rotation, const py::object& turns,
-                                              const py::object& easing, const py::object& correspond = py::none(),
-                                              const py::object& pins = py::none(),
-                                              const py::object& frame_check = py::none()) {
-  sm::MorphStickFiguresOptions options;
-  options.spelling = kKeyword;
-  // Here rather than only in the engine so that the message quotes a Python
-  // int beyond long long as given.
-  options.frames = sm::check_frames(to_count(frames, "frames"), kKeyword, py::str(frames));
-  // None is the default, as for every other option.
-  if (!method.is_none()) options.method = sm::parse_morph_method(to_name(method, "method"));
-  if (!steiner.is_none()) options.steiner = sm::parse_steiner_method(to_name(steiner, "steiner"));
-  if (!weights.is_none()) options.weights = sm::parse_weight_kind(to_name(weights, "weights"));
-  if (!verify.is_none()) options.verify = to_flag(verify, "verify");
-  if (!frame_check.is_none()) options.frame_check = sm::parse_frame_check(to_name(frame_check, "frame_check"));
-  if (!enclosure_sides.is_none()) {
-    const long long sides = to_count(enclosure_sides, "enclosure_sides");
-    // Range checked by check_morph_options below, after the refusal of
-    // options linear would ignore; only a saturated value needs its text.
-    options.enclosure_sides = sides;
-    if (options.method != sm::MorphMethod::Linear)
-      sm::check_enclosure_sides(sides, kKeyword, py::str(enclosure_sides));
-  }
-  if (!rotation.is_none()) options.rotation = sm::parse_rotation_direction(to_name(rotation, "rotation"));
-  if (!turns.is_none()) {
-    options.turns = to_count(turns, "turns");
-    if (options.method == sm::MorphMethod::Rigid) sm::check_turns(*options.turns, kKeyword, py::str(turns));
-  }
-  if (!easing.is_none()) options.easing = sm::parse_easing(to_name(easing, "easing"));
-  if (!correspond.is_none()) options.correspond = sm::parse_correspondence_mode(to_name(correspond, "correspond"));
-  options.pins = to_pins(pins);
-  sm::check_morph_options(options);
-  return options;
-}
 
 // The similarity the rigid method fitted, as stats["rigid"]["similarity"].
 py::dict similarity_dict(const sm::SimilarityMotion& sim) {
@@ -141,29 +100,6 @@ py::dict morph_dict(const sm::MorphStickFiguresResult& result, const sm::MorphSt
   }
   return dict;
 }
-
-// stickmorph.limits: the engine's bounds by name, for range checks and help
-// texts outside the engine (the add-on's properties, its preferences).
-py::dict limits_dict() {
-  py::dict limits;
-  for (const auto& [name, value] : engine_limits()) {
-    // Counts as ints; the coordinate bound (1e100) is a float.
-    if (value == std::floor(value) && std::abs(value) < 1e15)
-      limits[name.c_str()] = static_cast<long long>(value);
-    else
-      limits[name.c_str()] = value;
-  }
-  return limits;
-}
-
-// stickmorph.OPTION_NAMES: keyword -> CLI flag ("" where the CLI has none),
-// from the engine's one table.
-py::dict option_names_dict() {
-  py::dict names;
-  for (const sm::OptionName& row : sm::option_names()) names[row.keyword] = row.command_line;
-  return names;
-}
-
 
 // ---------------------------------------------------------------------------
 // MorphSolver
@@ -383,11 +319,6 @@ class RigidMorphSolverBinding {
 }  // namespace
 
 void bind_morph(py::module_& m) {
-  m.attr("limits") = limits_dict();
-  m.attr("OPTION_NAMES") = option_names_dict();
-  m.attr("METHOD_NAMES") = py::make_tuple("rigid", "barycentric", "linear");
-  m.attr("ROTATION_NAMES") = py::make_tuple("short", "ccw", "cw");
-  m.attr("EASING_NAMES") = py::make_tuple("none", "in-out");
 
   py::class_<MorphSolverBinding>(m, "MorphSolver", R"doc(The morph of one triangulation at any time t, for scrubbing (paper, Algorithm 3, step 4).
 
@@ -661,6 +592,8 @@ Args:
   one with method="linear", which would ignore it, raises
   InvalidArgumentError, as `stickmorph morph --method linear` refuses them.
   Likewise the rigid-only options with another method.
+  stickmorph.option_rules lists, for each option, the methods it applies
+  to, its range or accepted names and its default: the engine's table.
   target_edges: optional #E by 2 integer array-like, the target's edge list.
 
 Returns:

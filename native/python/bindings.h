@@ -17,7 +17,11 @@ void bind_figures(pybind11::module_& m);
 /// compatible_triangulation and triangulate_figures (bind_triangulation.cpp).
 void bind_triangulation(pybind11::module_& m);
 
-/// morph, and the limits and option names it checks (bind_morph.cpp).
+/// stickmorph.limits, OPTION_NAMES, the names tuples and option_rules: the
+/// engine's limits and the rules of morph()'s options (bind_options.cpp).
+void bind_options(pybind11::module_& m);
+
+/// morph, MorphSolver and RigidMorphSolver (bind_morph.cpp).
 void bind_morph(pybind11::module_& m);
 
 }  // namespace stickmorph::python

@@ -24,7 +24,23 @@ Triangulations", Pacific Graphics 2001. A figure is given as
 
 Every function validates its figures first and raises InvalidFigureError
 naming the offending vertex and edge indices. Exception messages are the
-engine's, the same text the `stickmorph` command prints after "error: ".)doc";
+engine's, the same text the `stickmorph` command prints after "error: ".
+
+The engine's rules are module attributes, so that callers (the Blender
+add-on, help texts) read them instead of keeping copies:
+
+  limits        dict: the numeric bounds by name ("max_frames", ...)
+  OPTION_NAMES  dict: morph()'s keyword -> the CLI's flag ("" if none)
+  option_rules  dict: for each keyword option of morph() ("frames",
+                "method", "steiner", "weights", "enclosure_sides",
+                "verify", "frame_check", "rotation", "turns", "easing",
+                "correspond", "pins") a dict with "methods", the tuple of
+                method names it applies to (given with another method, it
+                is refused with InvalidArgumentError), and where the option
+                has them "min" and "max" (counts, inclusive), "choices"
+                (the accepted names) and "default". pins have no default
+                and need correspond="auto"; frame_check is refused with
+                verify=False.)doc";
 
 
 }  // namespace
@@ -36,5 +52,6 @@ PYBIND11_MODULE(stickmorph, m) {
   stickmorph::python::bind_errors(m);
   stickmorph::python::bind_figures(m);
   stickmorph::python::bind_triangulation(m);
+  stickmorph::python::bind_options(m);
   stickmorph::python::bind_morph(m);
 }

@@ -205,50 +205,6 @@ std::string morph_method_name(MorphMethod method) {
   throw InternalError("morph_method_name: unknown MorphMethod " + std::to_string(static_cast<int>(method)));
 }
 
-void check_morph_options(const MorphStickFiguresOptions& options) {
-  check_frames(options.frames, options.spelling);
-  // "--method linear" or "method='linear'", as the caller would have written it.
-  const std::string method_text = options.spelling == OptionSpelling::CommandLine
-                                      ? "--method " + morph_method_name(options.method)
-                                      : "method='" + morph_method_name(options.method) + "'";
-  // Options given that this method would ignore: the first one is refused.
-  auto refuse_given = [&](std::initializer_list<std::pair<Option, bool>> options_given, const char* why) {
-    for (const auto& [option, given] : options_given)
-      if (given)
-        throw InvalidArgumentError(describe_option(option, options.spelling) + " has no effect with " + method_text +
-                                   " (" + why + ")");
-  };
-  if (options.method == MorphMethod::Linear) {
-    // The order of the CLI's historical checks, so that the first refused
-    // option named is the same as before.
-    refuse_given({{Option::Verify, options.verify.has_value()},
-                  {Option::FrameCheck, options.frame_check.has_value()},
-                  {Option::Weights, options.weights.has_value()},
-                  {Option::Steiner, options.steiner.has_value()},
-                  {Option::EnclosureSides, options.enclosure_sides.has_value()}},
-                 "the straight-line morph uses no triangulation");
-    if (options.keep_node_frames)
-      throw InvalidArgumentError("node frames do not exist with " + method_text +
-                                 " (the straight-line morph uses no triangulation)");
-  }
-  if (options.method != MorphMethod::Rigid)
-    refuse_given({{Option::Rotation, options.rotation.has_value()},
-                  {Option::Turns, options.turns.has_value()},
-                  {Option::Easing, options.easing.has_value()}},
-                 "only the rigid method factors out a rotation and follows a guide");
-  if (options.frame_check && options.verify == false)
-    throw InvalidArgumentError(describe_option(Option::FrameCheck, options.spelling) + " has no effect with " +
-                               (options.spelling == OptionSpelling::CommandLine ? "--no-verify" : "verify=False") +
-                               " (no frame is checked)");
-  if (options.enclosure_sides) check_enclosure_sides(*options.enclosure_sides, options.spelling);
-  if (options.turns) check_turns(*options.turns, options.spelling);
-  if (!options.pins.empty() && options.correspond != CorrespondenceMode::Auto)
-    throw InvalidArgumentError(describe_option(Option::Pins, options.spelling) +
-                               (options.spelling == OptionSpelling::CommandLine ? " needs --correspond auto"
-                                                                                : " need correspond='auto'") +
-                               " (with the index correspondence every vertex is already paired)");
-}
-
 GuidedMorph prepare_rigid_morph(const StickFigure& source, const StickFigure& target,
                                 const MorphStickFiguresOptions& options, MorphStickFiguresStats* stats) {
   if (options.method != MorphMethod::Rigid)

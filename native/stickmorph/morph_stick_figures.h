@@ -35,6 +35,7 @@
 #include "stickmorph/figure_triangulation.h"
 #include "stickmorph/guided_morph.h"
 #include "stickmorph/morph.h"
+#include "stickmorph/morph_options.h"  // check_morph_options and the options' rules
 #include "stickmorph/rigid_guide.h"
 #include "stickmorph/similarity_motion.h"
 #include "stickmorph/stick_figure.h"
@@ -145,16 +146,6 @@ struct MorphStickFiguresResult {
   /// and ->target: m vertices, their edges), not the inputs'.
   std::optional<FigureCorrespondence> correspondence;
 };
-
-/// Checks `options` without morphing: what morph_stick_figures does first.
-/// Interfaces call it before reading input files, so that a bad option is
-/// reported before a file error and before any work.
-/// @throws InvalidArgumentError: frames or enclosure_sides out of range, or
-///         an option the linear method would ignore (steiner, weights,
-///         enclosure_sides, verify, keep_node_frames), or a rigid-only
-///         option (rotation, turns, easing) with another method, or pins
-///         without correspond = Auto.
-void check_morph_options(const MorphStickFiguresOptions& options);
 
 /// Algorithm 3 on two figures whose vertices correspond by index, or on the
 /// matched figure of two that do not (options.correspond).

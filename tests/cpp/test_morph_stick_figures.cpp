@@ -291,6 +291,102 @@ TEST_CASE("the option-name table names every option once") {
   CHECK(describe_option(Option::SmoothingRounds, OptionSpelling::CommandLine) == "smoothing_rounds");
 }
 
+TEST_CASE("morph_option_rules: every option of the morph once, each parsed back by its engine name") {
+  std::set<int> seen;
+  for (const MorphOptionRule& rule : morph_option_rules()) {
+    CHECK(seen.insert(int(rule.option)).second);
+    CHECK(&morph_option_rule(rule.option) == &rule);
+    CHECK(rule.methods != 0);
+    // A rule that does not apply to every method says why in its messages.
+    CHECK((rule.methods == kAllMethods) == (*rule.refused_because == '\0'));
+    if (rule.kind == OptionValueKind::Count) {
+      CHECK(rule.least <= rule.default_count);
+      CHECK(rule.default_count <= rule.most);
+    }
+    if (rule.kind == OptionValueKind::Name)
+      CHECK(std::find(rule.choices.begin(), rule.choices.end(), rule.default_name) != rule.choices.end());
+  }
+  // Smoothing rounds belong to compatible_triangulation, not to the morph.
+  CHECK(seen.size() == option_names().size() - 1);
+  CHECK_THROWS_AS(morph_option_rule(Option::SmoothingRounds), InternalError);
+  for (const std::string& name : morph_option_rule(Option::Steiner).choices) CHECK_NOTHROW(parse_steiner_method(name));
+  for (const std::string& name : morph_option_rule(Option::Weights).choices) CHECK_NOTHROW(parse_weight_kind(name));
+  for (const std::string& name : morph_option_rule(Option::Method).choices) CHECK_NOTHROW(parse_morph_method(name));
+  CHECK(morph_option_rule(Option::Frames).most == kMaxMorphFrames);
+  CHECK(morph_option_rule(Option::EnclosureSides).default_count == kDefaultEnclosureSides);
+  CHECK(morph_option_rule(Option::Turns).least == -kMaxExtraTurns);
+}
+
+TEST_CASE("option_applies: the triangulation's options not to linear, the rotation's only to rigid") {
+  for (const Option option : {Option::Steiner, Option::Weights, Option::EnclosureSides, Option::Verify,
+                              Option::FrameCheck}) {
+    CHECK(option_applies(option, MorphMethod::Rigid));
+    CHECK(option_applies(option, MorphMethod::Barycentric));
+    CHECK_FALSE(option_applies(option, MorphMethod::Linear));
+  }
+  for (const Option option : {Option::Rotation, Option::Turns, Option::Easing}) {
+    CHECK(option_applies(option, MorphMethod::Rigid));
+    CHECK_FALSE(option_applies(option, MorphMethod::Barycentric));
+    CHECK_FALSE(option_applies(option, MorphMethod::Linear));
+  }
+  for (const Option option : {Option::Frames, Option::Method, Option::Correspond, Option::Pins})
+    for (const MorphMethod method : {MorphMethod::Rigid, MorphMethod::Barycentric, MorphMethod::Linear})
+      CHECK(option_applies(option, method));
+}
+
+TEST_CASE("check_morph_options refuses every option given with a method outside its rule") {
+  // Derived from the table, so that the rule and the check cannot drift.
+  for (const MorphOptionRule& rule : morph_option_rules())
+    for (const MorphMethod method : {MorphMethod::Rigid, MorphMethod::Barycentric, MorphMethod::Linear}) {
+      MorphStickFiguresOptions options;
+      options.method = method;
+      switch (rule.option) {
+        case Option::Verify: options.verify = true; break;
+        case Option::FrameCheck: options.frame_check = FrameCheck::Certificate; break;
+        case Option::Weights: options.weights = WeightKind::MeanValue; break;
+        case Option::Steiner: options.steiner = SteinerMethod::Improved; break;
+        case Option::EnclosureSides: options.enclosure_sides = kDefaultEnclosureSides; break;
+        case Option::Rotation: options.rotation = RotationDirection::Short; break;
+        case Option::Turns: options.turns = 0; break;
+        case Option::Easing: options.easing = Easing::None; break;
+        default: continue;  // always in effect
+      }
+      const std::string message = refusal(options);
+      if (option_applies(rule.option, method)) {
+        CHECK(message.empty());
+      } else {
+        CHECK(message == describe_option(rule.option, OptionSpelling::Keyword) + " has no effect with method='" +
+                             morph_method_name(method) + "' (" + rule.refused_because + ")");
+      }
+    }
+}
+
+TEST_CASE("check_count_option checks a count's range only where the option applies") {
+  CHECK_THROWS_WITH(check_count_option(Option::EnclosureSides, 2, MorphMethod::Barycentric, OptionSpelling::Keyword),
+                    "enclosure_sides must be at least 3, got 2");
+  CHECK_THROWS_WITH(check_count_option(Option::EnclosureSides, std::numeric_limits<long long>::max(),
+                                       MorphMethod::Rigid, OptionSpelling::Keyword, "1" + std::string(30, '0')),
+                    "enclosure_sides must be at most 1000, got 1" + std::string(30, '0'));
+  CHECK_THROWS_WITH(check_count_option(Option::Turns, 101, MorphMethod::Rigid, OptionSpelling::CommandLine),
+                    "option --turns must be at most 100, got 101");
+  // Out of its methods the value does not matter: check_morph_options
+  // refuses the option by name.
+  CHECK_NOTHROW(check_count_option(Option::EnclosureSides, 2, MorphMethod::Linear, OptionSpelling::Keyword));
+  CHECK_NOTHROW(check_count_option(Option::Turns, 101, MorphMethod::Barycentric, OptionSpelling::Keyword));
+  CHECK_THROWS_AS(check_count_option(Option::Steiner, 1, MorphMethod::Rigid, OptionSpelling::Keyword), InternalError);
+}
+
+TEST_CASE("check_pins_need_auto names the command when given one") {
+  const std::vector<VertexPin> pins = {{0, 0}};
+  CHECK_NOTHROW(check_pins_need_auto(CorrespondenceMode::ByIndex, {}, OptionSpelling::CommandLine));
+  CHECK_NOTHROW(check_pins_need_auto(CorrespondenceMode::Auto, pins, OptionSpelling::CommandLine));
+  CHECK_THROWS_WITH(check_pins_need_auto(CorrespondenceMode::ByIndex, pins, OptionSpelling::CommandLine, "check: "),
+                    "check: option --pin needs --correspond auto (with the index correspondence every vertex is "
+                    "already paired)");
+  CHECK_THROWS_WITH(check_pins_need_auto(CorrespondenceMode::ByIndex, pins, OptionSpelling::Keyword),
+                    "pins need correspond='auto' (with the index correspondence every vertex is already paired)");
+}
+
 TEST_CASE("parse_morph_method knows the three methods") {
   CHECK(parse_morph_method("rigid") == MorphMethod::Rigid);
   CHECK(parse_morph_method("barycentric") == MorphMethod::Barycentric);

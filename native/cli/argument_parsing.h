@@ -1,0 +1,66 @@
+// The CLI's commands as data and the parsing of their arguments: each
+// command is a CommandSpec (name, positionals, options, help texts, run
+// function), and parse_arguments turns its command line into
+// ParsedArguments with CLI11, every mistake one InvalidArgumentError that
+// names the command (FORMAT.md's one-line errors), never CLI11's report.
+// Apart from main.cpp so that the commands read as what they do, not how
+// their arguments are taken apart.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace stickmorph::cli {
+
+/// An option a command accepts, e.g. {"--frames", "", "N", ...}.
+struct OptionSpec {
+  std::string_view name;        ///< long form, "--frames"
+  std::string_view short_name;  ///< "-o", or empty
+  std::string_view value_name;  ///< "N" if the option takes a value, empty for a flag
+  std::string help;             ///< built at start-up where it quotes the engine's limits
+  bool repeatable = false;      ///< may be given more than once (--pin); all values kept in order
+};
+
+/// A command's arguments after parsing: positionals in order, options by
+/// long name (flags map to an empty string).
+struct ParsedArguments {
+  std::vector<std::string> positional;
+  std::map<std::string, std::string, std::less<>> options;
+  /// Repeatable options: every value, in command-line order.
+  std::map<std::string, std::vector<std::string>, std::less<>> repeated;
+};
+
+struct CommandSpec {
+  std::string_view name;
+  std::vector<std::string_view> positional_names;  ///< each one required
+  std::vector<OptionSpec> options;
+  std::string_view summary;      ///< one line for the global help
+  std::string_view description;  ///< paragraph for the command's help
+  int (*run)(const ParsedArguments& arguments);
+};
+
+/// "stickmorph morph SOURCE.json TARGET.json [options]".
+std::string usage_line(const CommandSpec& command);
+
+/// Argument mistakes name the command and point at its help.
+/// @throws InvalidArgumentError "<command>: <what> (usage: ...; see ...)".
+[[noreturn]] void fail_usage(const CommandSpec& command, const std::string& what);
+
+/// "'text'".
+std::string single_quoted(std::string_view text);
+
+/// The text of 'stickmorph COMMAND --help'.
+std::string command_help(const CommandSpec& command);
+
+/// Parses a command's arguments into positionals and options. Accepts
+/// "--name value", "--name=value", "-o value", "-o=value"; "--" ends the
+/// options so that a file named "-x.json" can still be passed.
+/// @returns false if help was asked (-h or --help anywhere).
+/// @throws InvalidArgumentError (fail_usage) for every mistake.
+bool parse_arguments(const CommandSpec& command, const std::vector<std::string>& arguments,
+                     ParsedArguments& parsed);
+
+}  // namespace stickmorph::cli
