@@ -17,6 +17,7 @@
 #include "stickmorph/internal/preconditioned_gmres.h"
 #include "stickmorph/internal/solution_space.h"
 #include "stickmorph/internal/stopwatch.h"
+#include "stickmorph/internal/warm_start.h"
 
 namespace stickmorph {
 namespace {
@@ -424,7 +425,7 @@ struct MorphSolver::State {
   // The last kHistory solutions and their times, the latest last: the warm
   // starts of the next solve().
   static constexpr std::size_t kHistory = 3;
-  std::vector<std::pair<double, Eigen::MatrixX2d>> history;
+  std::vector<KeptSolution> history;  // warm_start.h
   Eigen::MatrixX2d x;  // the last solution
   double last_t = 0;   // its time
   bool solved = false;
@@ -452,53 +453,22 @@ struct MorphSolver::State {
     ++stats.solves;
     last_t = t;
     for (auto it = history.begin(); it != history.end(); ++it)
-      if (it->first == t) {
+      if (it->t == t) {
         history.erase(it);
         break;
       }
     if (history.size() == kHistory) history.erase(history.begin());
-    history.emplace_back(t, x);
+    history.push_back({t, x});
   }
 
   // Warm starts for t, best first on a tie: the polynomial through the
   // latest solutions at distinct times evaluated at t (quadratic through
-  // three, linear through two; x(t) is smooth, a rational function of t, so
-  // frames at even steps are extrapolated to O(h^3)), and the remembered
-  // solution nearest in time. iterate() starts from the one of least
-  // residual, so a wild extrapolation (a far jump in a scrub) costs one
-  // residual, not steps.
+  // three, linear through two) and the remembered solution nearest in time
+  // (extrapolated_starts, warm_start.h); before any solve, the source.
+  // solve() starts from the one of least residual.
   std::vector<Eigen::MatrixX2d> warm_starts(double t) const {
-    std::vector<Eigen::MatrixX2d> guesses;
-    if (history.empty()) {
-      guesses.push_back(start);
-      return guesses;
-    }
-    const std::size_t k = history.size();
-    for (std::size_t points = std::min<std::size_t>(k, 3); points >= 2; --points) {
-      // Lagrange basis on the `points` latest times.
-      const std::size_t first = k - points;
-      Eigen::MatrixX2d p = Eigen::MatrixX2d::Zero(x.rows(), 2);
-      bool distinct = true;
-      for (std::size_t i = first; i < k && distinct; ++i) {
-        double weight = 1;
-        for (std::size_t j = first; j < k; ++j) {
-          if (j == i) continue;
-          const double gap = history[i].first - history[j].first;
-          if (gap == 0) {
-            distinct = false;
-            break;
-          }
-          weight *= (t - history[j].first) / gap;
-        }
-        p += weight * history[i].second;
-      }
-      if (distinct && p.allFinite()) guesses.push_back(std::move(p));
-    }
-    std::size_t nearest = k - 1;
-    for (std::size_t i = 0; i < k; ++i)
-      if (std::abs(history[i].first - t) < std::abs(history[nearest].first - t)) nearest = i;
-    guesses.push_back(history[nearest].second);
-    return guesses;
+    if (history.empty()) return {start};
+    return extrapolated_starts(history, t);
   }
 };
 
@@ -524,8 +494,8 @@ std::vector<Vec2> MorphSolver::solve(double t) {
   s.last_factorized = false;
   // A time among the latest solved: the same positions again, bit for bit.
   for (const auto& entry : s.history)
-    if (entry.first == t) {
-      s.x = entry.second;
+    if (entry.t == t) {
+      s.x = entry.x;
       s.remember(t);
       return s.system.positions(s.x);
     }

@@ -131,7 +131,7 @@ bool ConvexCombinationSystem::solve(double u, const Weights& weights, std::vecto
   // measured with GMRES) but costs as much in steps.
   if (factorized_ && !history_.empty() && skipped_ == 0) {
     const double tolerance = tolerance_ * std::max(b.norm(), 1e-300);
-    x = warm_start(u, b);
+    x = least_squares_start(a_, b, history_, u, warm_start_storage_);
     // Densely filled factors (see kAnchorIterationsDense) iterate longer
     // and, after a failure, try again on the anchor just made: the next
     // frame converges on it in 4-6 steps, a fifth of what factorizing
@@ -183,46 +183,6 @@ void ConvexCombinationSystem::refine(std::vector<Vec2>& positions, int rounds) c
   // A correction that is not finite: the positions stay as solved.
   if (!finite) return;
   for (int row = 0; row < m; ++row) positions[nodes_[row]] = {double(x(row, 0)), double(x(row, 1))};
-}
-
-// span of the kept solutions (both coordinates of each; six solutions,
-// twelve columns: twelve products with A and a small QR, a fraction of
-// one preconditioner solve), unless the last solution itself has a
-// smaller residual (a rank-deficient span). With fewer than three kept,
-// the last one or the linear extrapolation in u through the last two.
-// Measured at 10^3 vertices, 50 frames: the Steiner system (linear in u)
-// starts 10^2 to 10^3 times closer than from the last solution and then
-// converges in 1-5 steps instead of 10-15 (polygon, 624 Steiner
-// vertices); the blended system only 5 to 10 times closer (its weights
-// follow the trust, which has kinks), about a step saved.
-//
-// The linear and quadratic extrapolations in u through the last two and
-// three solutions (Lagrange) were candidates too, each costing a product
-// with A for its residual; but they lie in the span, where the least
-// squares solution has the least residual of all, column by column, so
-// they could win only by rounding. Nor is the least-squares residual a
-// product with A: it is b minus the images times the coefficients.
-Eigen::MatrixX2d ConvexCombinationSystem::warm_start(double u, const Eigen::MatrixX2d& b) const {
-  const std::size_t h = history_.size();
-  Eigen::MatrixX2d best = history_.back().x;
-  double best_norm = (b - a_ * best).norm();
-  if (h == 2) {
-    const Solution& p = history_[0];
-    const Solution& q = history_[1];
-    if (p.u != q.u) {
-      Eigen::MatrixX2d candidate = q.x + ((u - q.u) / (q.u - p.u)) * (q.x - p.x);
-      if ((b - a_ * candidate).norm() < best_norm) best = std::move(candidate);
-    }
-  }
-  if (h >= 3) {
-    basis_.resize(size(), 2 * int(h));
-    for (std::size_t i = 0; i < h; ++i) basis_.middleCols(2 * int(i), 2) = history_[i].x;
-    images_ = a_ * basis_;
-    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(images_);
-    const Eigen::MatrixXd y = qr.solve(b);
-    if (y.allFinite() && (b - images_ * y).norm() < best_norm) best = basis_ * y;
-  }
-  return best;
 }
 
 }  // namespace internal

@@ -27,6 +27,7 @@
 #include "stickmorph/stick_figure.h"  // Vec2
 #include "stickmorph/internal/morph_topology.h"
 #include "stickmorph/internal/preconditioned_gmres.h"
+#include "stickmorph/internal/warm_start.h"
 
 namespace stickmorph {
 namespace internal {
@@ -49,9 +50,10 @@ class ConvexCombinationSystem {
 
   /// Solves with the weights weights(v) over topo.ring[v] of every row's
   /// node; `positions` supplies the known nodes and receives the solution.
-  /// `u`: the morph parameter of the solve, for the warm start (see
-  /// warm_start; starting from the guide frame instead was measured to
-  /// converge less often).
+  /// `u`: the morph parameter of the solve, for the warm start (the
+  /// least-squares start from the latest solutions, warm_start.h;
+  /// starting from the guide frame instead was measured to converge less
+  /// often).
   /// False if the system is singular (never, for positive weights).
   bool solve(double u, const Weights& weights, std::vector<Vec2>& positions);
 
@@ -66,8 +68,6 @@ class ConvexCombinationSystem {
   void refine(std::vector<Vec2>& positions, int rounds) const;
 
  private:
-  Eigen::MatrixX2d warm_start(double u, const Eigen::MatrixX2d& b) const;
-
   /// GMRES steps before the anchor counts as too far (see the .cpp for the
   /// measurements): four, twelve where the factors fill in densely.
   static constexpr int kAnchorIterations = 4;
@@ -90,14 +90,10 @@ class ConvexCombinationSystem {
   int failures_in_a_row_ = 0;  // iterations that did not converge since the last that did
   int factorizations_ = 0;
   // The latest solutions (oldest first) and their parameters u: the warm
-  // starts.
-  struct Solution {
-    double u;
-    Eigen::MatrixX2d x;
-  };
-  std::vector<Solution> history_;
-  GmresWorkspace gmres_;                    // preconditioned_gmres's storage
-  mutable Eigen::MatrixXd basis_, images_;  // warm_start's storage
+  // starts (least_squares_start, warm_start.h).
+  std::vector<KeptSolution> history_;
+  LeastSquaresStartStorage warm_start_storage_;
+  GmresWorkspace gmres_;  // preconditioned_gmres's storage
   SymmetricOrderedLU lu_;
   CompactLU factors_;  // lu_ as plain columns, for the solves
 };
