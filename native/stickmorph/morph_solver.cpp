@@ -274,18 +274,13 @@ class MorphSystem {
   /// vectors across the benchmark's families, at 10^3 vertices).
   bool space_guess(double t, Eigen::MatrixX2d& x) const { return space_.guess(t, x); }
   void add_to_space(const Eigen::MatrixX2d& x) { space_.add(x); }
+
   /// The moment space: at each of kMomentAnchors times t_a in [0, 1] (a
   /// factorization each, kept as an anchor), the solution x(t_a) and its
-  /// first kMomentLevels derivatives in t, from A(t) x(t) = b(t) with A
-  /// and b linear in t: A x' = (b1 - b0) - (A1 - A0) x and A x^(j) = -j
-  /// (A1 - A0) x^(j-1), one pair of triangular solves each. The Galerkin
-  /// projection onto such a space matches the Taylor expansion of x at
-  /// every t_a to the levels' order (multi-point moment matching, the
-  /// rational Krylov reduction of Grimme 1997, "Krylov projection methods
-  /// for model reduction", chapter 5), so it interpolates x over all of
-  /// [0, 1] rather than extrapolating from the times already played:
-  /// measured at 10^3 vertices (48 frames of 50, one space for both
-  /// coordinates), every frame of the polyline, tree, triangulation,
+  /// first kMomentLevels derivatives in t (SolutionSpace::add_moments), so
+  /// that the projection interpolates x over all of [0, 1] rather than
+  /// extrapolating from the times already played: measured at 10^3
+  /// vertices (48 frames of 50, one space for both coordinates), every frame of the polyline, tree, triangulation,
   /// thinned and rings families projected within 0.06 of the tolerance,
   /// the polygon within 101 times it and the spiral (whose solution varies
   /// fastest) within 1e8 times it, against 40-1e9 times it for the space of
@@ -300,27 +295,7 @@ class MorphSystem {
     for (int i = 0; i < kMomentAnchors; ++i) {
       const double ta = kMomentAnchors == 1 ? 0.5 : double(i) / (kMomentAnchors - 1);
       if (!factorize(ta)) throw VerificationError("the morph system at t = " + format_double(ta) + " is singular");
-      // Column j of coordinate c's block: its j-th derivative.
-      Eigen::MatrixXd blocks[2] = {Eigen::MatrixXd(unknowns(), kMomentLevels + 1),
-                                   Eigen::MatrixXd(unknowns(), kMomentLevels + 1)};
-      Eigen::MatrixX2d d = solve();
-      for (int c = 0; c < 2; ++c) blocks[c].col(0) = d.col(c);
-      d = lu().solve(Eigen::MatrixX2d(db - (a1_ * d - a0_ * d)));
-      int levels = kMomentLevels;
-      for (int level = 1; level <= kMomentLevels; ++level) {
-        // Only the direction matters: scaled to unit norm against overflow.
-        for (int c = 0; c < 2; ++c) {
-          const double norm = d.col(c).norm();
-          if (norm > 0 && std::isfinite(norm)) d.col(c) /= norm;
-        }
-        if (!d.allFinite()) {
-          levels = level - 1;
-          break;
-        }
-        for (int c = 0; c < 2; ++c) blocks[c].col(level) = d.col(c);
-        if (level < kMomentLevels) d = lu().solve(Eigen::MatrixX2d(a0_ * d - a1_ * d));
-      }
-      for (int c = 0; c < 2; ++c) space_.add_block(c, blocks[c].leftCols(levels + 1));
+      space_.add_moments(lu(), solve(), db, kMomentLevels);
     }
   }
   static constexpr int kMomentAnchors = 3;

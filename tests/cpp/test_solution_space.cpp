@@ -110,3 +110,28 @@ TEST_CASE("SolutionSpace::add_block keeps at most its capacity and reports half 
   Eigen::MatrixX2d x;
   CHECK_FALSE(space.guess(0.5, x));  // coordinate 1's space is empty
 }
+
+TEST_CASE("SolutionSpace::add_moments spans a solution linear in t from one time", "[solution_space]") {
+  // A constant matrix, b linear in t: x(t) = x(0) + t x'(0), which the
+  // moments at t = 0 hold (the later derivatives vanish up to rounding:
+  // A0 d - A1 d is not evaluated as exactly zero, so their directions of
+  // rounding noise may join the space too, harmlessly).
+  const int m = 50;
+  const SparseMatrix a = chain_system(m, 0.4);
+  const LongMatrixX2 b0 = right_hand_side(m, 0.0), b1 = right_hand_side(m, 2.0);
+  SymmetricOrderedLU lu;
+  lu.analyzePattern(a);
+  lu.factorize(a);
+  REQUIRE(lu.info() == Eigen::Success);
+  const CompactLU factors(lu);
+  SolutionSpace space(a, a, b0, b1, SolutionSpace::capacity_for(m));
+  const Eigen::MatrixX2d db = (b1 - b0).cast<double>();
+  space.add_moments(factors, solution(a, a, b0, b1, 0), db, 9);
+  CHECK(space.size() >= 4);  // at least x(0) and x'(0) per coordinate
+  Eigen::MatrixX2d x;
+  for (double t : {0.25, 0.9}) {
+    REQUIRE(space.guess(t, x));
+    const Eigen::MatrixX2d exact = solution(a, a, b0, b1, t);
+    CHECK((x - exact).cwiseAbs().maxCoeff() <= 1e-10 * exact.cwiseAbs().maxCoeff());
+  }
+}

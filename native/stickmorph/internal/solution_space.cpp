@@ -131,5 +131,37 @@ void SolutionSpace::add_block(int c, Eigen::MatrixXd block) {
   sp.k += added;
 }
 
+// The derivatives from A(t) x(t) = b(t) with A and b linear in t:
+// A x' = (b1 - b0) - (A1 - A0) x and A x^(j) = -j (A1 - A0) x^(j-1), one
+// pair of triangular solves each (only their directions are kept, so the
+// factor j is dropped). The Galerkin projection onto such a space matches
+// the Taylor expansion of x at every t_a to the levels' order (multi-point
+// moment matching, the rational Krylov reduction of Grimme 1997, "Krylov
+// projection methods for model reduction", chapter 5).
+void SolutionSpace::add_moments(const CompactLU& factors, const Eigen::MatrixX2d& solution,
+                                const Eigen::MatrixX2d& db, int max_levels) {
+  // Column j of coordinate c's block: its j-th derivative.
+  Eigen::MatrixXd blocks[2] = {Eigen::MatrixXd(a0_.rows(), max_levels + 1),
+                               Eigen::MatrixXd(a0_.rows(), max_levels + 1)};
+  Eigen::MatrixX2d d = solution;
+  for (int c = 0; c < 2; ++c) blocks[c].col(0) = d.col(c);
+  d = factors.solve(Eigen::MatrixX2d(db - (a1_ * d - a0_ * d)));
+  int levels = max_levels;
+  for (int level = 1; level <= max_levels; ++level) {
+    // Only the direction matters: scaled to unit norm against overflow.
+    for (int c = 0; c < 2; ++c) {
+      const double norm = d.col(c).norm();
+      if (norm > 0 && std::isfinite(norm)) d.col(c) /= norm;
+    }
+    if (!d.allFinite()) {
+      levels = level - 1;
+      break;
+    }
+    for (int c = 0; c < 2; ++c) blocks[c].col(level) = d.col(c);
+    if (level < max_levels) d = factors.solve(Eigen::MatrixX2d(a0_ * d - a1_ * d));
+  }
+  for (int c = 0; c < 2; ++c) add_block(c, blocks[c].leftCols(levels + 1));
+}
+
 }  // namespace internal
 }  // namespace stickmorph

@@ -17,6 +17,7 @@
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 
+#include "stickmorph/internal/compact_lu.h"
 #include "stickmorph/internal/long_double_refinement.h"  // LongMatrixX2
 
 namespace stickmorph {
@@ -50,6 +51,13 @@ class SolutionSpace {
   /// them, orthonormalized; columns already in the space to rounding, and
   /// those beyond the capacity, are left out.
   void add_block(int c, Eigen::MatrixXd block);
+
+  /// Adds the moments at a time t_a to both coordinates' spaces: the
+  /// solution x(t_a) there and its first `max_levels` derivatives in t
+  /// (each scaled to unit norm; fewer if one is not finite), from
+  /// `factors` of A(t_a) and db = b1 - b0.
+  void add_moments(const CompactLU& factors, const Eigen::MatrixX2d& solution, const Eigen::MatrixX2d& db,
+                   int max_levels);
 
   /// Whether either coordinate's space is at least half full.
   bool half_full() const;
