@@ -12,16 +12,19 @@
 #include "stickmorph/errors.h"
 #include "stickmorph/internal/barycentric_weights.h"
 #include "stickmorph/internal/compact_lu.h"
+#include "stickmorph/internal/long_double_refinement.h"
 #include "stickmorph/internal/morph_topology.h"
 #include "stickmorph/internal/preconditioned_gmres.h"
+#include "stickmorph/internal/solution_space.h"
 #include "stickmorph/internal/stopwatch.h"
+#include "stickmorph/internal/warm_start.h"
 
 namespace stickmorph {
 namespace {
 
 using namespace internal;
 using SparseMatrix = Eigen::SparseMatrix<double>;  // column-major, as SparseLU wants
-using LongVector = Eigen::Matrix<long double, Eigen::Dynamic, 2>;
+using LongVector = LongMatrixX2;  // long_double_refinement.h
 
 using LU = SymmetricOrderedLU;  // compact_lu.h
 
@@ -111,7 +114,10 @@ using LU = SymmetricOrderedLU;  // compact_lu.h
 /// frames each: 251 of 476 frames without a step, 3 factorizations).
 class MorphSystem {
  public:
-  MorphSystem(const FigureTriangulation& tri, WeightKind kind) : tri_(tri), topo_(build_topology(tri)) {
+  MorphSystem(const FigureTriangulation& tri, WeightKind kind)
+      : tri_(tri),
+        topo_(build_topology(tri)),
+        space_(a0_, a1_, b0_, b1_, SolutionSpace::capacity_for(int(topo_.interior_nodes.size()))) {
     require_positive(tri, tri.source, "source");
     require_positive(tri, tri.target, "target");
     require_enclosure(tri);
@@ -148,8 +154,6 @@ class MorphSystem {
       throw InternalError("morph: the source and target systems have different sparsity patterns");
     a_ = a0_;
     lu_.analyzePattern(a_);
-    capacity_ = std::max<Eigen::Index>(
-        1, std::min<Eigen::Index>(kMaxSpace, Eigen::Index(kSpaceBudgetBytes / (16.0 * std::max(m, 1)))));
   }
 
   int unknowns() const { return int(topo_.interior_nodes.size()); }
@@ -263,123 +267,20 @@ class MorphSystem {
   /// Steps after which an anchor counts as too far from the frame.
   static constexpr int kAnchorIterations = 8;
 
-  /// The space of the moments and earlier solutions (a reduced basis): x(t)
-  /// is an analytic function of one parameter, so the solutions at a few
-  /// times span all the others to many digits (measured at 10^3 vertices:
-  /// the singular values of 201 solutions over [0, 1] fall below 1e-11 of
-  /// the first after 30 to 70 vectors across the benchmark's families).
-  /// Each coordinate of every solution whose projection was not near the
-  /// tolerance (near_tolerance) joins that coordinate's orthonormal basis V
-  /// (up to capacity_ columns); the Galerkin projection V^T A(t) V y =
-  /// V^T b_c(t) then costs O(k^3 + m k) per frame and coordinate, with
-  /// V^T A0 V, V^T A1 V, V^T b0 and V^T b1 kept (A(t) and b(t) blend
-  /// linearly), far less than a triangular solve. Its result is accepted
-  /// only by its true residual.
-  bool space_guess(double t, Eigen::MatrixX2d& x) const {
-    if (space_[0].k == 0 || space_[1].k == 0) return false;
-    x.resize(unknowns(), 2);
-    for (int c = 0; c < 2; ++c) {
-      const Space& sp = space_[c];
-      const Eigen::Index k = sp.k;
-      const Eigen::MatrixXd g = (1 - t) * sp.g0.topLeftCorner(k, k) + t * sp.g1.topLeftCorner(k, k);
-      const Eigen::VectorXd rhs = (1 - t) * sp.c0.head(k) + t * sp.c1.head(k);
-      const Eigen::VectorXd y = Eigen::PartialPivLU<Eigen::MatrixXd>(g).solve(rhs);
-      if (!y.allFinite()) return false;
-      x.col(c).noalias() = sp.v.leftCols(k) * y;
-    }
-    return x.allFinite();
-  }
-  /// Adds each coordinate of the solution x to its space (what is new in
-  /// it, orthonormalized twice; nothing if it is already in the space to
-  /// rounding, or the space is full). A full space keeps what it
-  /// has: a window over the latest solutions (what this replaced) forgot the
-  /// start of a playback, so a scrub after it projected almost nothing, and
-  /// dropping columns spread over time lost the directions that later
-  /// columns are orthogonal to (measured at 10^4 vertices, a 240-frame
-  /// playback then 240 random times: the projection's residual jumped from
-  /// about the tolerance to 1e6 times it either way). The
-  /// storage is allocated once, at the capacity: a column costs its
-  /// orthogonalization and the new row and column of the projected
-  /// matrices, O(m k), and no copy of the space (conservativeResize copied
-  /// it whole for every column: a third of a frame at 10^3 vertices).
-  void add_to_space(const Eigen::MatrixX2d& x) {
-    for (int c = 0; c < 2; ++c) add_block_to_space(c, x.col(c));
-  }
-
-  /// Adds the columns of `block` to coordinate c's space: what is new in
-  /// them against the space (block Gram-Schmidt, twice), orthonormalized
-  /// among themselves by a Householder QR; a column whose new part is below
-  /// 1e-12 of its norm is left out (already in the space to rounding), and
-  /// columns beyond the capacity. Blocked (matrix-matrix products), so that
-  /// the moment space's few dozen columns (build_moment_space) cost about
-  /// one pass over them rather than one per column.
-  void add_block_to_space(int c, Eigen::MatrixXd block) {
-    Space& sp = space_[c];
-    if (sp.v.cols() == 0) {
-      sp.v.resize(unknowns(), capacity_);
-      sp.g0.resize(capacity_, capacity_);
-      sp.g1.resize(capacity_, capacity_);
-      sp.c0.resize(capacity_);
-      sp.c1.resize(capacity_);
-    }
-    const Eigen::Index room = capacity_ - sp.k;
-    if (room <= 0 || block.cols() == 0) return;
-    const Eigen::VectorXd norms0 = block.colwise().norm().transpose();
-    if (!block.allFinite()) return;
-    const auto basis = sp.v.leftCols(sp.k);
-    if (sp.k > 0) block.noalias() -= basis * (basis.transpose() * block);
-    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(block);
-    std::vector<Eigen::Index> kept;
-    // (R's diagonal has min(m, columns) entries: a system smaller than the
-    // block, as in a figure of a few vertices, spans at most m directions.)
-    const Eigen::Index diagonal = std::min(block.rows(), block.cols());
-    for (Eigen::Index j = 0; j < diagonal && Eigen::Index(kept.size()) < room; ++j)
-      if (norms0(j) > 0 && std::abs(qr.matrixQR()(j, j)) > 1e-12 * norms0(j)) kept.push_back(j);
-    if (kept.empty()) return;
-    Eigen::MatrixXd q = qr.householderQ() * Eigen::MatrixXd::Identity(block.rows(), block.cols());
-    Eigen::MatrixXd chosen(block.rows(), Eigen::Index(kept.size()));
-    for (std::size_t i = 0; i < kept.size(); ++i) chosen.col(Eigen::Index(i)) = q.col(kept[i]);
-    // Twice is enough (block Gram-Schmidt, BCGS2): a column whose new part
-    // was tiny came out of the first QR orthogonal to its block but only
-    // roughly to the space; a second pass and QR restore both. (Into an
-    // empty space the first QR's columns are already orthonormal.)
-    if (sp.k > 0) {
-      chosen.noalias() -= basis * (basis.transpose() * chosen);
-      const Eigen::HouseholderQR<Eigen::MatrixXd> again(chosen);
-      q = again.householderQ() * Eigen::MatrixXd::Identity(chosen.rows(), chosen.cols());
-    } else {
-      q = std::move(chosen);
-    }
-    const Eigen::Index k = sp.k, added = Eigen::Index(kept.size());
-    sp.v.middleCols(k, added) = q;
-    const auto fresh = sp.v.middleCols(k, added);
-    const auto all = sp.v.leftCols(k + added);
-    // The new columns and rows of V^T A0 V and V^T A1 V, and of V^T b.
-    const Eigen::MatrixXd a0v = a0_ * fresh, a1v = a1_ * fresh;
-    sp.g0.block(0, k, k + added, added).noalias() = all.transpose() * a0v;
-    sp.g1.block(0, k, k + added, added).noalias() = all.transpose() * a1v;
-    if (k > 0) {
-      const Eigen::MatrixXd a0tv = a0_.transpose() * fresh, a1tv = a1_.transpose() * fresh;
-      sp.g0.block(k, 0, added, k).noalias() = (basis.transpose() * a0tv).transpose();
-      sp.g1.block(k, 0, added, k).noalias() = (basis.transpose() * a1tv).transpose();
-    }
-    sp.c0.segment(k, added).noalias() = fresh.transpose() * b0_.col(c).cast<double>();
-    sp.c1.segment(k, added).noalias() = fresh.transpose() * b1_.col(c).cast<double>();
-    sp.k += added;
-  }
+  /// The space of the moments and earlier solutions (solution_space.h):
+  /// each coordinate of every solution whose projection was not near the
+  /// tolerance (near_tolerance) joins it (the singular values of 201
+  /// solutions over [0, 1] fall below 1e-11 of the first after 30 to 70
+  /// vectors across the benchmark's families, at 10^3 vertices).
+  bool space_guess(double t, Eigen::MatrixX2d& x) const { return space_.guess(t, x); }
+  void add_to_space(const Eigen::MatrixX2d& x) { space_.add(x); }
 
   /// The moment space: at each of kMomentAnchors times t_a in [0, 1] (a
   /// factorization each, kept as an anchor), the solution x(t_a) and its
-  /// first kMomentLevels derivatives in t, from A(t) x(t) = b(t) with A
-  /// and b linear in t: A x' = (b1 - b0) - (A1 - A0) x and A x^(j) = -j
-  /// (A1 - A0) x^(j-1), one pair of triangular solves each. The Galerkin
-  /// projection onto such a space matches the Taylor expansion of x at
-  /// every t_a to the levels' order (multi-point moment matching, the
-  /// rational Krylov reduction of Grimme 1997, "Krylov projection methods
-  /// for model reduction", chapter 5), so it interpolates x over all of
-  /// [0, 1] rather than extrapolating from the times already played:
-  /// measured at 10^3 vertices (48 frames of 50, one space for both
-  /// coordinates), every frame of the polyline, tree, triangulation,
+  /// first kMomentLevels derivatives in t (SolutionSpace::add_moments), so
+  /// that the projection interpolates x over all of [0, 1] rather than
+  /// extrapolating from the times already played: measured at 10^3
+  /// vertices (48 frames of 50, one space for both coordinates), every frame of the polyline, tree, triangulation,
   /// thinned and rings families projected within 0.06 of the tolerance,
   /// the polygon within 101 times it and the spiral (whose solution varies
   /// fastest) within 1e8 times it, against 40-1e9 times it for the space of
@@ -394,27 +295,7 @@ class MorphSystem {
     for (int i = 0; i < kMomentAnchors; ++i) {
       const double ta = kMomentAnchors == 1 ? 0.5 : double(i) / (kMomentAnchors - 1);
       if (!factorize(ta)) throw VerificationError("the morph system at t = " + format_double(ta) + " is singular");
-      // Column j of coordinate c's block: its j-th derivative.
-      Eigen::MatrixXd blocks[2] = {Eigen::MatrixXd(unknowns(), kMomentLevels + 1),
-                                   Eigen::MatrixXd(unknowns(), kMomentLevels + 1)};
-      Eigen::MatrixX2d d = solve();
-      for (int c = 0; c < 2; ++c) blocks[c].col(0) = d.col(c);
-      d = lu().solve(Eigen::MatrixX2d(db - (a1_ * d - a0_ * d)));
-      int levels = kMomentLevels;
-      for (int level = 1; level <= kMomentLevels; ++level) {
-        // Only the direction matters: scaled to unit norm against overflow.
-        for (int c = 0; c < 2; ++c) {
-          const double norm = d.col(c).norm();
-          if (norm > 0 && std::isfinite(norm)) d.col(c) /= norm;
-        }
-        if (!d.allFinite()) {
-          levels = level - 1;
-          break;
-        }
-        for (int c = 0; c < 2; ++c) blocks[c].col(level) = d.col(c);
-        if (level < kMomentLevels) d = lu().solve(Eigen::MatrixX2d(a0_ * d - a1_ * d));
-      }
-      for (int c = 0; c < 2; ++c) add_block_to_space(c, blocks[c].leftCols(levels + 1));
+      space_.add_moments(lu(), solve(), db, kMomentLevels);
     }
   }
   static constexpr int kMomentAnchors = 3;
@@ -426,13 +307,9 @@ class MorphSystem {
 
   /// Past half the capacity, a frame projected near the tolerance no longer
   /// adds its solution (near_tolerance).
-  bool space_half_full() const { return 2 * std::max(space_[0].k, space_[1].k) >= capacity_; }
-  /// Columns of both coordinates' spaces (at most capacity_ each).
-  int space_size() const { return int(space_[0].k + space_[1].k); }
-  /// Each coordinate space's capacity: kMaxSpace columns, fewer for a
-  /// system so large that both would take more than kSpaceBudgetBytes.
-  static constexpr Eigen::Index kMaxSpace = 80;
-  static constexpr double kSpaceBudgetBytes = 64.0 * 1024 * 1024;
+  bool space_half_full() const { return space_.half_full(); }
+  /// Columns of both coordinates' spaces (at most their capacity each).
+  int space_size() const { return space_.size(); }
 
   /// Interior coordinates in the source embedding: the first warm start.
   Eigen::MatrixX2d source_coordinates() const {
@@ -452,24 +329,17 @@ class MorphSystem {
 
   /// Iterative refinement: residuals of the blended system computed in long
   /// double from the endpoint values (so the blend itself is not rounded to
-  /// double), corrections solved with the double factorization.
+  /// double), corrections solved with the double factorization
+  /// (long_double_refinement.h). A correction that is not finite ends the
+  /// rounds, keeping those before it.
   Eigen::MatrixX2d refine(double time, const Eigen::MatrixX2d& start, int rounds) const {
     const long double t = time;
     LongVector x = start.cast<long double>();
     const LongVector b = (1 - t) * b0_ + t * b1_;
-    for (int round = 0; round < rounds; ++round) {
-      LongVector r = b;
-      for (int col = 0; col < a0_.outerSize(); ++col)
-        for (Eigen::Index e = a0_.outerIndexPtr()[col]; e < a0_.outerIndexPtr()[col + 1]; ++e) {
-          const int row = a0_.innerIndexPtr()[e];
-          const long double a = (1 - t) * a0_.valuePtr()[e] + t * a1_.valuePtr()[e];
-          r(row, 0) -= a * x(col, 0);
-          r(row, 1) -= a * x(col, 1);
-        }
-      const Eigen::MatrixX2d correction = lu().solve(Eigen::MatrixX2d(r.cast<double>()));
-      if (!correction.allFinite()) break;
-      x += correction.cast<long double>();
-    }
+    const double* v0 = a0_.valuePtr();
+    const double* v1 = a1_.valuePtr();
+    refine_in_long_double(
+        a0_, [&](Eigen::Index e) -> long double { return (1 - t) * v0[e] + t * v1[e]; }, b, lu(), x, rounds);
     return x.cast<double>();
   }
 
@@ -493,18 +363,7 @@ class MorphSystem {
   double t_ = 0;
   Eigen::MatrixX2d b_;   // the right-hand side at the prepared time
   double tolerance_ = 0;  // the iteration's residual tolerance there
-  // Per coordinate, the space V (its first k columns; allocated at
-  // capacity_ on first use), V^T A0 V, V^T A1 V, V^T b0 and V^T b1 of that
-  // coordinate. (Coordinate c's solution is A(t)^-1 b_c(t): its own
-  // moments span it, and two spaces of k columns cost a quarter of one of
-  // 2k in the projection and half in the setup.)
-  struct Space {
-    Eigen::MatrixXd v, g0, g1;
-    Eigen::VectorXd c0, c1;
-    Eigen::Index k = 0;
-  };
-  Space space_[2];
-  Eigen::Index capacity_ = 0;  // per coordinate
+  SolutionSpace space_;  // refers to a0_, a1_, b0_ and b1_
   bool blended_ = false;  // a_ holds the blend at blended_t_
   double blended_t_ = 0;
   /// Factorizations kept, each at its time: a scrub back and forth finds one
@@ -541,7 +400,7 @@ struct MorphSolver::State {
   // The last kHistory solutions and their times, the latest last: the warm
   // starts of the next solve().
   static constexpr std::size_t kHistory = 3;
-  std::vector<std::pair<double, Eigen::MatrixX2d>> history;
+  std::vector<KeptSolution> history;  // warm_start.h
   Eigen::MatrixX2d x;  // the last solution
   double last_t = 0;   // its time
   bool solved = false;
@@ -569,53 +428,22 @@ struct MorphSolver::State {
     ++stats.solves;
     last_t = t;
     for (auto it = history.begin(); it != history.end(); ++it)
-      if (it->first == t) {
+      if (it->t == t) {
         history.erase(it);
         break;
       }
     if (history.size() == kHistory) history.erase(history.begin());
-    history.emplace_back(t, x);
+    history.push_back({t, x});
   }
 
   // Warm starts for t, best first on a tie: the polynomial through the
   // latest solutions at distinct times evaluated at t (quadratic through
-  // three, linear through two; x(t) is smooth, a rational function of t, so
-  // frames at even steps are extrapolated to O(h^3)), and the remembered
-  // solution nearest in time. iterate() starts from the one of least
-  // residual, so a wild extrapolation (a far jump in a scrub) costs one
-  // residual, not steps.
+  // three, linear through two) and the remembered solution nearest in time
+  // (extrapolated_starts, warm_start.h); before any solve, the source.
+  // solve() starts from the one of least residual.
   std::vector<Eigen::MatrixX2d> warm_starts(double t) const {
-    std::vector<Eigen::MatrixX2d> guesses;
-    if (history.empty()) {
-      guesses.push_back(start);
-      return guesses;
-    }
-    const std::size_t k = history.size();
-    for (std::size_t points = std::min<std::size_t>(k, 3); points >= 2; --points) {
-      // Lagrange basis on the `points` latest times.
-      const std::size_t first = k - points;
-      Eigen::MatrixX2d p = Eigen::MatrixX2d::Zero(x.rows(), 2);
-      bool distinct = true;
-      for (std::size_t i = first; i < k && distinct; ++i) {
-        double weight = 1;
-        for (std::size_t j = first; j < k; ++j) {
-          if (j == i) continue;
-          const double gap = history[i].first - history[j].first;
-          if (gap == 0) {
-            distinct = false;
-            break;
-          }
-          weight *= (t - history[j].first) / gap;
-        }
-        p += weight * history[i].second;
-      }
-      if (distinct && p.allFinite()) guesses.push_back(std::move(p));
-    }
-    std::size_t nearest = k - 1;
-    for (std::size_t i = 0; i < k; ++i)
-      if (std::abs(history[i].first - t) < std::abs(history[nearest].first - t)) nearest = i;
-    guesses.push_back(history[nearest].second);
-    return guesses;
+    if (history.empty()) return {start};
+    return extrapolated_starts(history, t);
   }
 };
 
@@ -641,8 +469,8 @@ std::vector<Vec2> MorphSolver::solve(double t) {
   s.last_factorized = false;
   // A time among the latest solved: the same positions again, bit for bit.
   for (const auto& entry : s.history)
-    if (entry.first == t) {
-      s.x = entry.second;
+    if (entry.t == t) {
+      s.x = entry.x;
       s.remember(t);
       return s.system.positions(s.x);
     }
