@@ -1,6 +1,6 @@
 """What the add-on needs before numpy and the native module are known to load.
 
-The property definitions (preferences.py) need the limits and the defaults
+The property definitions (properties.py) need the limits and the defaults
 (BakeSettings), every module needs the error type, and the panel and the pin
 operators need the pin groups' naming rule (is_pin_group); they live here,
 importing nothing but the standard library, so that the add-on registers, and
@@ -78,9 +78,9 @@ class BakeSettings:
     """The options of one bake, in one object.
 
     The operator reads its properties into one of these once
-    (preferences.bake_settings) and core and baking take their options only
+    (properties.bake_settings) and core and baking take their options only
     from it, so a new option is a field here and a property in
-    preferences.option_properties, not a keyword argument threaded through
+    properties.option_properties, not a keyword argument threaded through
     every call. The defaults are the properties' defaults: option_properties
     takes them from here. Frozen: one bake's options do not change while it
     runs. Values are not checked here: core checks the ranges (compute_morph)

@@ -15,7 +15,8 @@ import textwrap
 import bpy
 
 from .common import StickMorphError, pin_names
-from .preferences import OPTION_NAMES
+from .helpers import dependency_status, edited_meshes, resolve_pair
+from .properties import OPTION_NAMES
 
 # Longest label of a property-split row that 3.4's default sidebar shows in
 # full: "Weights" and "Steiner" were, "Enclos…" (Enclosure Sides) was not
@@ -84,7 +85,6 @@ def _label_lines(layout, context, text, icon="NONE"):
 def draw_dependency_box(layout, context):
     """A box saying what is missing when numpy or the native module do not
     load (dependencies.check at enable time); nothing otherwise."""
-    from .operators import dependency_status
     status = dependency_status()
     if status.ok:
         return False
@@ -101,7 +101,6 @@ def pair_preview(context, settings):
     """(ok, text lines) saying which object a bake would use as the source and
     which as the target, resolved exactly as the operator does, or why it
     cannot."""
-    from .operators import resolve_pair
     source_name = settings.source.name if settings.source else ""
     target_name = settings.target.name if settings.target else ""
     try:
@@ -118,7 +117,6 @@ def pin_preview(context, settings):
     group names only (the panel redraws often; the bake reads and checks
     the groups' vertices, core.read_pins): how many, a line saying so, and
     what a bake would refuse."""
-    from .operators import edited_meshes, resolve_pair
     objects = edited_meshes(context)
     if len(objects) != 2:
         try:
