@@ -19,7 +19,6 @@ bake reports what is missing as an ERROR instead of failing with a raw
 ImportError.
 """
 
-import os
 import time
 
 import bpy
