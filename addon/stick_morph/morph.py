@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .common import BakeSettings, StickMorphError, is_pin_group
+from .common import BakeSettings, StickMorphError, is_pin_group, option_applies
 from .correspondence import (_BY_INDEX, CORRESPONDENCES, Matching, _names, check_pins, choose_correspondence,
                              compare_edge_sets, matched_heights, read_pins)
 from .messages import engine_error_message, match_error_message
@@ -201,23 +201,22 @@ def compute_morph(prepared: PreparedPair, settings: BakeSettings) -> MorphResult
         raise StickMorphError(f"the extra turns must be a whole number from {-limits['max_turns']} to "
                               f"{limits['max_turns']}, got {turns!r}")
     m = engine_frame_count(frame_count, easing, motion)
-    options = {}
-    if motion != "LINEAR":
-        # verify: every frame is checked exactly; easing for BARYCENTRIC
-        # picks engine frames instead of interpolating (ease_sample_indices)
-        # so that what is baked is what was verified. LINEAR takes none of
-        # these (the engine refuses an option it would ignore).
-        options.update(steiner=settings.steiner, weights=settings.weights, enclosure_sides=enclosure_sides,
-                       verify=True)
-    if motion == "RIGID":
-        # The engine spaces a rigid morph's frames evenly along the motion
-        # (by how far the figure has moved, not by time), and its in-out
-        # easing is applied to that even-speed parameter. Picking frames of a
-        # finer uniform morph, as for BARYCENTRIC, would ease the engine's
-        # time instead, which for RIGID is already reparametrised: the figure
-        # would ease by the wrong clock and cost 8x the frames. So the engine
-        # gets exactly frame_count frames and easing="in-out".
-        options.update(rotation=rotation.lower(), turns=turns, easing=RIGID_EASINGS[easing])
+    # Only the options that apply to the motion (common.OPTION_METHODS, the
+    # engine's rule): the engine refuses an option it would ignore, so
+    # LINEAR gets none of these. verify: every frame is checked exactly;
+    # easing for BARYCENTRIC picks engine frames instead of interpolating
+    # (ease_sample_indices) so that what is baked is what was verified.
+    #
+    # RIGID's easing goes to the engine: it spaces a rigid morph's frames
+    # evenly along the motion (by how far the figure has moved, not by
+    # time), and its in-out easing is applied to that even-speed parameter.
+    # Picking frames of a finer uniform morph, as for BARYCENTRIC, would ease
+    # the engine's time instead, which for RIGID is already reparametrised:
+    # the figure would ease by the wrong clock and cost 8x the frames. So the
+    # engine gets exactly frame_count frames and easing="in-out".
+    candidates = dict(steiner=settings.steiner, weights=settings.weights, enclosure_sides=enclosure_sides,
+                      verify=True, rotation=rotation.lower(), turns=turns, easing=RIGID_EASINGS[easing])
+    options = {name: value for name, value in candidates.items() if option_applies(name, motion)}
     try:
         result = engine.morph(prepared.source_xy, prepared.target_xy, prepared.edges, frames=m,
                               method=motion.lower(), **options)

@@ -14,7 +14,7 @@ import textwrap
 
 import bpy
 
-from .common import StickMorphError, pin_names
+from .common import OPTION_METHODS, PROPERTY_OPTIONS, StickMorphError, pin_names, property_applies
 from .helpers import dependency_status, edited_meshes, resolve_pair
 from .properties import OPTION_NAMES
 
@@ -47,21 +47,18 @@ ADVANCED = tuple(name for name, _ in ADVANCED_SPLIT + ADVANCED_FULL + ADVANCED_L
 
 # Options that only some motions use: drawn greyed out (row.active = False,
 # still editable, as Blender greys out settings that have no effect) when
-# the data's motion is not one of them.
-RIGID_ONLY = ("rotation", "turns")
-NOT_LINEAR = ("steiner", "weights", "enclosure_sides", "show_triangulation")
+# the data's motion is not one of them. Both derive from the one table of
+# which engine option applies to which method (common.OPTION_METHODS).
+RIGID_ONLY = tuple(name for name, option in PROPERTY_OPTIONS.items() if OPTION_METHODS[option] == ("rigid",))
+NOT_LINEAR = tuple(name for name, option in PROPERTY_OPTIONS.items()
+                   if OPTION_METHODS[option] == ("rigid", "barycentric"))
 
 
 def row_active(data, name):
     """Whether the option `name` has an effect with the other options of data."""
-    motion = getattr(data, "motion", "RIGID")
-    if name in RIGID_ONLY:
-        return motion == "RIGID"
-    if name in NOT_LINEAR:
-        return motion != "LINEAR"
     if name == "tube_radius":
         return bool(getattr(data, "renderable", True))
-    return True
+    return property_applies(name, getattr(data, "motion", "RIGID"))
 
 
 def _wrap(context, text):
