@@ -155,11 +155,11 @@ class BakeSettings:
     enclosure_sides: int = ENGINE_LIMITS["default_enclosure_sides"]
     plane: str = "AUTO"
     # How vertices of the source find their partners in the target
-    # (core.CORRESPONDENCES): AUTO, by index where that works and matched
+    # (core.CORRESPONDENCES): INDEX_OR_MATCH (labelled Automatic), by index where that works and matched
     # otherwise; INDEX, vertex i of one mesh is vertex i of the other; MATCH,
     # always matched by shape (stickmorph.correspond), pins respected.
-    correspondence: str = "AUTO"
-    easing: str = "LINEAR"
+    correspondence: str = "INDEX_OR_MATCH"
+    easing: str = "NONE"  # timing.EASINGS: NONE or IN_OUT, the engine's "none" and "in-out"
     renderable: bool = True
     tube_radius: float = 0.01  # a fraction of the figures' size
     show_triangulation: bool = False

@@ -11,10 +11,12 @@ import numpy as np
 from .common import StickMorphError, pin_names
 
 # How the meshes' vertices correspond (settings.correspondence; see
-# choose_correspondence): AUTO, by index when that works, else matched;
+# choose_correspondence): INDEX_OR_MATCH ("Automatic" in the panel), by
+# index when that works, else matched (not the engine's correspond="auto",
+# which always matches: that is MATCH here);
 # INDEX, vertex i of one mesh is vertex i of the other; MATCH, always
 # matched by shape (stickmorph.correspond).
-CORRESPONDENCES = ("AUTO", "INDEX", "MATCH")
+CORRESPONDENCES = ("INDEX_OR_MATCH", "INDEX", "MATCH")
 
 
 @dataclass(frozen=True)
@@ -132,9 +134,9 @@ def choose_correspondence(setting: str, same_vertex_count: bool, same_edges: boo
     or takes them by index, and why it matches when the setting left it open.
 
     INDEX: by index (prepare_pair has refused meshes that cannot be). MATCH:
-    matched. AUTO: by index when the meshes have the same vertex count and
+    matched. INDEX_OR_MATCH: by index when the meshes have the same vertex count and
     edge set, no pins, and are compatible by index; matched otherwise. Pins
-    say that the vertices are not paired by number, so AUTO matches
+    say that the vertices are not paired by number, so INDEX_OR_MATCH matches
     whenever there are any. compatible_by_index is called (once) only when
     the answer depends on it: the engine's check costs a pass over the
     figures."""
@@ -142,7 +144,7 @@ def choose_correspondence(setting: str, same_vertex_count: bool, same_edges: boo
         return False, ""
     if setting == "MATCH":
         return True, ""
-    if setting != "AUTO":
+    if setting != "INDEX_OR_MATCH":
         raise StickMorphError(f"unknown correspondence {setting!r} (choose one of {', '.join(CORRESPONDENCES)})")
     if pinned:
         return True, "pins are given"

@@ -125,7 +125,7 @@ def prepare_pair(source_world, source_edges, source_faces: int, source_name: str
             f"{limit:.3g}, {planarity_tolerance:g} of the size {size:.6g})"
             + ("" if plane == "AUTO" else "; try plane AUTO"))
 
-    index_report = []  # the by-index check's report, when AUTO ran it
+    index_report = []  # the by-index check's report, when INDEX_OR_MATCH ran it
 
     def compatible_by_index():
         engine = load_engine()

@@ -61,7 +61,7 @@ def option_properties():
             name="Correspondence",
             description="Which vertex of the target each vertex of the source becomes",
             # The panel's label is "Match" (ui.py): item names read after it.
-            items=(("AUTO", "Automatic",
+            items=(("INDEX_OR_MATCH", "Automatic",
                     "By index when the meshes have the same vertices and edges and are compatible that way; "
                     "otherwise matched by shape"),
                    ("INDEX", "By Index",
@@ -125,8 +125,8 @@ def option_properties():
             default=defaults.plane, options=set()),
         "easing": EnumProperty(
             name="Easing", description="How the speed changes over the morph",
-            items=(("LINEAR", "Linear", "Constant speed (for Rigid motion: even speed along the motion)"),
-                   ("EASE_IN_OUT", "Ease In-Out", "Slow at the start and the end (smoothstep)")),
+            items=(("NONE", "Linear", "Constant speed (for Rigid motion: even speed along the motion)"),
+                   ("IN_OUT", "Ease In-Out", "Slow at the start and the end (smoothstep)")),
             default=defaults.easing, options=set()),
         "renderable": BoolProperty(
             name="Renderable", description="Give the edges geometry (Geometry Nodes tubes) so that they render",

@@ -9,12 +9,12 @@ import numpy as np
 from .common import StickMorphError
 from .native import engine_limits
 
-EASINGS = ("LINEAR", "EASE_IN_OUT")
+EASINGS = ("NONE", "IN_OUT")
 
 
 # The engine's easing of a RIGID morph for each of EASINGS
 # (stickmorph.EASING_NAMES).
-RIGID_EASINGS = {"LINEAR": "none", "EASE_IN_OUT": "in-out"}
+RIGID_EASINGS = {"NONE": "none", "IN_OUT": "in-out"}
 
 
 # With easing, BARYCENTRIC and LINEAR frames are picked from a finer uniform
@@ -23,12 +23,12 @@ RIGID_EASINGS = {"LINEAR": "none", "EASE_IN_OUT": "in-out"}
 EASE_OVERSAMPLING = 8
 
 
-def ease(t, easing: str = "LINEAR"):
+def ease(t, easing: str = "NONE"):
     """Time remap of [0, 1] onto [0, 1]: identity or smoothstep (ease in-out)."""
     t = np.clip(np.asarray(t, dtype=np.float64), 0.0, 1.0)
-    if easing == "LINEAR":
+    if easing == "NONE":
         return t
-    if easing == "EASE_IN_OUT":
+    if easing == "IN_OUT":
         return t * t * (3.0 - 2.0 * t)
     raise StickMorphError(f"unknown easing {easing!r} (choose one of {', '.join(EASINGS)})")
 
@@ -39,7 +39,7 @@ def engine_frame_count(frame_count: int, easing: str, motion: str) -> int:
     RIGID: exactly frame_count, the engine eases them itself
     (compute_morph). BARYCENTRIC and LINEAR: with easing, an oversampled
     uniform morph to pick from (ease_sample_indices)."""
-    if easing == "LINEAR" or motion == "RIGID":
+    if easing == "NONE" or motion == "RIGID":
         return frame_count
     return min(engine_limits()["max_frames"], (frame_count - 1) * EASE_OVERSAMPLING + 1)
 

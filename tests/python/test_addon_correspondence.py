@@ -69,11 +69,11 @@ class Check:
 @pytest.mark.parametrize("setting, same_count, same_edges, pinned, compatible, expected, calls", [
     ("INDEX", False, False, True, False, (False, ""), 0),  # prepare_pair refused what INDEX cannot take
     ("MATCH", True, True, False, True, (True, ""), 0),
-    ("AUTO", True, True, False, True, (False, "compatible by index"), 1),
-    ("AUTO", True, True, False, False, (True, "they are not compatible by index"), 1),
-    ("AUTO", False, True, False, True, (True, "the vertex counts differ"), 0),
-    ("AUTO", True, False, False, True, (True, "the edges differ"), 0),
-    ("AUTO", True, True, True, True, (True, "pins are given"), 0),
+    ("INDEX_OR_MATCH", True, True, False, True, (False, "compatible by index"), 1),
+    ("INDEX_OR_MATCH", True, True, False, False, (True, "they are not compatible by index"), 1),
+    ("INDEX_OR_MATCH", False, True, False, True, (True, "the vertex counts differ"), 0),
+    ("INDEX_OR_MATCH", True, False, False, True, (True, "the edges differ"), 0),
+    ("INDEX_OR_MATCH", True, True, True, True, (True, "pins are given"), 0),
 ])
 def test_choose_correspondence(setting, same_count, same_edges, pinned, compatible, expected, calls):
     check = Check(compatible)
@@ -85,8 +85,8 @@ def test_choose_correspondence(setting, same_count, same_edges, pinned, compatib
 
 
 def test_the_default_is_automatic():
-    assert core.BakeSettings().correspondence == "AUTO" == core.CORRESPONDENCES[0]
-    assert set(core.CORRESPONDENCES) == {"AUTO", "INDEX", "MATCH"}
+    assert core.BakeSettings().correspondence == "INDEX_OR_MATCH" == core.CORRESPONDENCES[0]
+    assert set(core.CORRESPONDENCES) == {"INDEX_OR_MATCH", "INDEX", "MATCH"}
     assert "unknown correspondence 'index'" in fails(correspondence="index")
 
 

@@ -118,7 +118,7 @@ def test_a_dotted_i_bakes_by_index(motion):
         assert engine.check_compatibility(prepared.source_xy, xy, prepared.edges)
 
 
-@pytest.mark.parametrize("correspondence", ["AUTO", "MATCH"])
+@pytest.mark.parametrize("correspondence", ["INDEX_OR_MATCH", "MATCH"])
 def test_dots_alone_bake(correspondence):
     # Three vertices and no edge: three parts, each a dot.
     source = np.array([[0.0, 0.0], [2.0, 0.0], [1.0, 1.6]])
