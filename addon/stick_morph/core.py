@@ -52,7 +52,8 @@ from .timing import (  # noqa: F401
 )
 from .messages import match_error_message, NESTING_DIFFERS, nesting_message, engine_error_message  # noqa: F401
 from .morph import (  # noqa: F401
-    MOTIONS, ROTATIONS, PreparedPair, MorphResult, prepare_pair, compute_morph, motion_summary,
+    MOTIONS, ROTATIONS, Fallback, IndexReport, PreparedPair, MorphResult, prepare_pair, compute_morph, morph_pair,
+    motion_summary,
     triangulation_world, tube_radius,
 )
 from .naming import MAX_RESULT_NAME_BYTES, RESULT_SUFFIX, result_name  # noqa: F401

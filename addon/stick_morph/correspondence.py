@@ -138,8 +138,9 @@ def choose_correspondence(setting: str, same_vertex_count: bool, same_edges: boo
     edge set, no pins, and are compatible by index; matched otherwise. Pins
     say that the vertices are not paired by number, so INDEX_OR_MATCH matches
     whenever there are any. compatible_by_index is called (once) only when
-    the answer depends on it: the engine's check costs a pass over the
-    figures."""
+    the answer depends on it. The bake (prepare_pair) answers True: the
+    morph by index is the check, and morph_pair falls back on the matching
+    when it refuses the pair, so that a bake checks compatibility once."""
     if setting == "INDEX":
         return False, ""
     if setting == "MATCH":

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import Callable
 
 import numpy as np
 
@@ -21,6 +22,16 @@ from .timing import EASINGS, RIGID_EASINGS, ease, ease_sample_indices, engine_fr
 # (stickmorph.METHOD_NAMES, ROTATION_NAMES) are these in lower case.
 MOTIONS = ("RIGID", "BARYCENTRIC", "LINEAR")
 ROTATIONS = ("SHORT", "CCW", "CW")
+
+
+@dataclass(frozen=True)
+class Fallback:
+    """What morph_pair needs to fall back on the matching (INDEX_OR_MATCH)."""
+
+    match: Callable  # (IndexReport) -> the matched PreparedPair; raises StickMorphError
+    # Raises the by-index check's message for an invalid figure (the target
+    # validated with its own edge list); returns if both are valid.
+    refuse_invalid: Callable
 
 
 @dataclass
@@ -39,6 +50,23 @@ class PreparedPair:
     edges: np.ndarray  # (E, 2) int64: by index the source mesh's edges in mesh order; matched, the matched figure's
     size: float  # diagonal of the common bounding box (world units)
     matching: Matching  # how the figure was made from the meshes
+    # INDEX_OR_MATCH taken by index: the matching to fall back on if the
+    # morph finds the pair incompatible by index (morph_pair). None otherwise.
+    fallback: Fallback | None = None
+
+
+@dataclass(frozen=True)
+class IndexReport:
+    """Why a pair is not compatible by index: the IncompatibleFiguresError of
+    the morph by index, in the shape of stickmorph.CompatibilityReport that
+    match_error_message reads (false, kind, reason, vertices)."""
+
+    kind: str
+    reason: str
+    vertices: tuple = ()
+
+    def __bool__(self):
+        return False
 
 
 @dataclass
@@ -125,48 +153,81 @@ def prepare_pair(source_world, source_edges, source_faces: int, source_name: str
             f"{limit:.3g}, {planarity_tolerance:g} of the size {size:.6g})"
             + ("" if plane == "AUTO" else "; try plane AUTO"))
 
-    index_report = []  # the by-index check's report, when INDEX_OR_MATCH ran it
-
-    def compatible_by_index():
-        engine = load_engine()
-        try:
-            report = engine.check_compatibility(source_xy, target_xy, source_edges, target_edges)
-        except (engine.StickMorphError, engine.InternalError) as e:
-            # An invalid figure is invalid however it is matched.
-            raise StickMorphError(engine_error_message(e, source_name, target_name)) from e
-        index_report.append(report)
-        return bool(report)
-
-    matched, why = choose_correspondence(
-        setting, len(source_world) == len(target_world),
-        compare_edge_sets(source_edges, target_edges) is None, bool(pins), compatible_by_index)
-    if not matched:
-        # By index: the source's edges are the figure's (the target's are
-        # the same set; the morph checks its compatibility as it starts).
+    def by_index(why):
+        # The source's edges are the figure's (the target's are the same
+        # set; the morph checks its compatibility as it starts).
         count = len(source_world)
         matching = Matching(False, why, np.arange(count), np.arange(count), count, count)
         return PreparedPair(source_name, target_name, fitted, source_xy, target_xy, source_h, target_h,
                             source_edges, size, matching)
+
+    def matched(why, index_report=None):
+        engine = load_engine()
+        try:
+            result = engine.correspond(source_xy, target_xy, source_edges, target_edges=target_edges,
+                                       pins=[[pin.source, pin.target] for pin in pins] or None)
+        except engine.IncompatibleFiguresError as e:
+            raise StickMorphError(match_error_message(e, source_name, target_name, pins, index_report)) from e
+        except (engine.StickMorphError, engine.InternalError) as e:
+            raise StickMorphError(engine_error_message(e, source_name, target_name)) from e
+        c = result["correspondence"]
+        source_vertex = np.asarray(c["source"], dtype=np.int64)
+        target_vertex = np.asarray(c["target"], dtype=np.int64)
+        matching = Matching(True, why, source_vertex, target_vertex, len(source_world), len(target_world),
+                            tuple(pins), dict(result["stats"]))
+        return PreparedPair(
+            source_name, target_name, fitted,
+            np.asarray(result["source_xy"], dtype=np.float64), np.asarray(result["target_xy"], dtype=np.float64),
+            matched_heights(source_h, source_edges, source_vertex, c["source_edge"], c["source_fraction"]),
+            matched_heights(target_h, target_edges, target_vertex, c["target_edge"], c["target_fraction"]),
+            np.asarray(result["edges"], dtype=np.int64).reshape(-1, 2), size, matching)
+
+    def refuse_invalid():
+        # What the by-index check said of an invalid figure before the morph
+        # took its place: the target validated with its own edge list, so
+        # that a message naming edges names the target mesh's (the morph by
+        # index has only the source's list). Raises, or returns if valid.
+        engine = load_engine()
+        try:
+            engine.check_compatibility(source_xy, target_xy, source_edges, target_edges)
+        except (engine.StickMorphError, engine.InternalError) as e:
+            raise StickMorphError(engine_error_message(e, source_name, target_name)) from e
+
+    # Whether an INDEX_OR_MATCH pair is compatible by index is not checked
+    # here: the morph by index checks it as it starts (one check per bake),
+    # and morph_pair falls back on the matching when it refuses the pair.
+    is_matched, why = choose_correspondence(
+        setting, len(source_world) == len(target_world),
+        compare_edge_sets(source_edges, target_edges) is None, bool(pins), lambda: True)
+    if is_matched:
+        return matched(why)
+    prepared = by_index(why)
+    if setting == "INDEX_OR_MATCH":
+        prepared.fallback = Fallback(lambda report: matched("they are not compatible by index", report),
+                                     refuse_invalid)
+    return prepared
+
+
+def morph_pair(prepared: PreparedPair, settings: BakeSettings) -> tuple[PreparedPair, MorphResult]:
+    """(the pair morphed, its MorphResult): compute_morph, and for a pair that
+    INDEX_OR_MATCH took by index (prepared.fallback), the matching if the
+    morph's own compatibility check refuses it by index: the bake's one
+    check decides (its reason is said if the matching fails too)."""
+    if prepared.fallback is None:
+        return prepared, compute_morph(prepared, settings)
     engine = load_engine()
     try:
-        result = engine.correspond(source_xy, target_xy, source_edges, target_edges=target_edges,
-                                   pins=[[pin.source, pin.target] for pin in pins] or None)
-    except engine.IncompatibleFiguresError as e:
-        raise StickMorphError(match_error_message(e, source_name, target_name, pins,
-                                                  index_report[0] if index_report else None)) from e
-    except (engine.StickMorphError, engine.InternalError) as e:
-        raise StickMorphError(engine_error_message(e, source_name, target_name)) from e
-    c = result["correspondence"]
-    source_vertex = np.asarray(c["source"], dtype=np.int64)
-    target_vertex = np.asarray(c["target"], dtype=np.int64)
-    matching = Matching(True, why, source_vertex, target_vertex, len(source_world), len(target_world),
-                        tuple(pins), dict(result["stats"]))
-    return PreparedPair(
-        source_name, target_name, fitted,
-        np.asarray(result["source_xy"], dtype=np.float64), np.asarray(result["target_xy"], dtype=np.float64),
-        matched_heights(source_h, source_edges, source_vertex, c["source_edge"], c["source_fraction"]),
-        matched_heights(target_h, target_edges, target_vertex, c["target_edge"], c["target_fraction"]),
-        np.asarray(result["edges"], dtype=np.int64).reshape(-1, 2), size, matching)
+        return prepared, compute_morph(prepared, settings)
+    except StickMorphError as error:
+        cause = error.__cause__
+        if isinstance(cause, engine.InvalidFigureError):
+            prepared.fallback.refuse_invalid()
+            raise
+        if not isinstance(cause, engine.IncompatibleFiguresError):
+            raise
+        report = IndexReport(cause.kind, cause.reason or "", tuple(cause.vertices or ()))
+    matched = prepared.fallback.match(report)
+    return matched, compute_morph(matched, settings)
 
 
 def compute_morph(prepared: PreparedPair, settings: BakeSettings) -> MorphResult:

@@ -183,7 +183,9 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
                                      target_world, target_edges, target_faces, target.name, settings,
                                      source_groups, target_groups)
         progress.stage("check", 15)
-        morph = core.compute_morph(prepared, settings)
+        # By index, or matched if Automatic's morph by index finds the pair
+        # incompatible that way (the bake's one compatibility check).
+        prepared, morph = core.morph_pair(prepared, settings)
         progress.stage("morph", 60)
         previous = baking.previous_results(source.name, target.name)
         count = settings.frame_count
