@@ -9,6 +9,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .common import StickMorphError, pin_names
+from .native import load_engine
 
 # How the meshes' vertices correspond (settings.correspondence; see
 # choose_correspondence): INDEX_OR_MATCH ("Automatic" in the panel), by
@@ -80,25 +81,13 @@ def figure_parts(vertex_count: int, edges) -> list[list[int]]:
     """The parts (connected components) of a figure on vertex_count vertices,
     each as its sorted vertex indices, in order of their smallest vertex: the
     engine's numbering, "part 0", "part 1", ... A vertex on no edge (a dot)
-    is a part of its own. Edges to vertices outside 0..vertex_count-1 are
-    ignored (the engine refuses them, naming the edge)."""
-    parent = list(range(int(vertex_count)))
-
-    def root(v):
-        while parent[v] != v:
-            parent[v] = parent[parent[v]]
-            v = parent[v]
-        return v
-
-    for a, b in np.asarray(edges, dtype=np.int64).reshape(-1, 2).tolist():
-        if 0 <= a < vertex_count and 0 <= b < vertex_count:
-            ra, rb = root(a), root(b)
-            if ra != rb:
-                parent[max(ra, rb)] = min(ra, rb)  # the root is the part's smallest vertex
-    parts = {}
-    for v in range(int(vertex_count)):
-        parts.setdefault(root(v), []).append(v)
-    return [parts[r] for r in sorted(parts)]
+    is a part of its own. The engine's own function (stickmorph.figure_parts),
+    so the numbering the report says is the one the engine's messages use.
+    Edges to vertices outside 0..vertex_count-1 are ignored here (the
+    engine's figure_parts refuses them; a morph names such an edge)."""
+    edges = np.asarray(edges, dtype=np.int64).reshape(-1, 2)
+    inside = edges[((edges >= 0) & (edges < int(vertex_count))).all(axis=1)]
+    return [list(part) for part in load_engine().figure_parts(int(vertex_count), inside)]
 
 
 def parts_summary(parts) -> str:
