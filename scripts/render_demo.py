@@ -103,7 +103,7 @@ def bake(source, target, frames, tube_radius):
     started = time.perf_counter()
     result = bpy.ops.object.stick_morph_bake(
         source=source.name, target=target.name, frame_start=1, frame_count=frames,
-        renderable=True, tube_radius=tube_radius, easing="LINEAR", set_frame_range=True)
+        renderable=True, tube_radius=tube_radius, easing="NONE", set_frame_range=True)
     if result != {"FINISHED"}:
         fail(f"baking {source.name} -> {target.name} failed ({result}); see the report above")
     obj = bpy.context.view_layer.objects.active

@@ -37,12 +37,12 @@ def register():
     global _modules
     import bpy
     # None of these import numpy or the native module at import time.
-    from . import operators, preferences, ui
+    from . import helpers, operators, preferences, ui
     _modules = (preferences, operators, ui)
     for module in _modules:
         module.register()
     bpy.types.VIEW3D_MT_object.append(_menu)
-    status = operators.dependency_status(force=True)
+    status = helpers.dependency_status(force=True)
     if not status.ok:
         # The console too: enabling from a script shows no panel.
         print(f"Stick Morph: {status.message()}")

@@ -1,6 +1,6 @@
 """What the add-on needs before numpy and the native module are known to load.
 
-The property definitions (preferences.py) need the limits and the defaults
+The property definitions (properties.py) need the limits and the defaults
 (BakeSettings), every module needs the error type, and the panel and the pin
 operators need the pin groups' naming rule (is_pin_group); they live here,
 importing nothing but the standard library, so that the add-on registers, and
@@ -36,6 +36,58 @@ ENGINE_LIMITS = {
     "max_coordinate_magnitude": 1e100,
 }
 
+
+
+# Which morph methods ("rigid", "barycentric", "linear") each of the engine's
+# morph() options applies to: a copy of the "methods" of the engine's
+# stickmorph.option_rules, the one place the add-on keeps this rule. A copy
+# for the same reason as ENGINE_LIMITS: the panel greys out options without
+# the module (ui.row_active), and compute_morph sends a motion only the
+# options that apply to it (the engine refuses the others) from the same
+# table. tests/python/test_addon_option_rules.py asserts that it equals the
+# module's table.
+_ALL_METHODS = ("rigid", "barycentric", "linear")
+_TRIANGULATED = ("rigid", "barycentric")  # the methods with a compatible triangulation
+OPTION_METHODS = {
+    "frames": _ALL_METHODS,
+    "method": _ALL_METHODS,
+    "verify": _TRIANGULATED,
+    "frame_check": _TRIANGULATED,
+    "weights": _TRIANGULATED,
+    "steiner": _TRIANGULATED,
+    "enclosure_sides": _TRIANGULATED,
+    "rotation": ("rigid",),
+    "turns": ("rigid",),
+    "easing": ("rigid",),
+    "correspond": _ALL_METHODS,
+    "pins": _ALL_METHODS,
+}
+
+# The add-on's properties that only some motions use, each with the engine
+# option whose methods decide it. The triangulation exists where the
+# triangulation's own options (steiner) apply. The add-on's easing is not
+# here: it applies to every motion (for BARYCENTRIC and LINEAR the add-on
+# picks frames itself, timing.ease_sample_indices).
+PROPERTY_OPTIONS = {
+    "rotation": "rotation",
+    "turns": "turns",
+    "steiner": "steiner",
+    "weights": "weights",
+    "enclosure_sides": "enclosure_sides",
+    "show_triangulation": "steiner",
+}
+
+
+def option_applies(option: str, motion: str) -> bool:
+    """Whether the engine option `option` applies to the add-on's motion
+    (RIGID, BARYCENTRIC, LINEAR: the engine's method in upper case)."""
+    return motion.lower() in OPTION_METHODS[option]
+
+
+def property_applies(name: str, motion: str) -> bool:
+    """Whether the add-on's property `name` has an effect with this motion."""
+    option = PROPERTY_OPTIONS.get(name)
+    return option is None or option_applies(option, motion)
 
 # A pin is a vertex group of this name prefix (any case) in both meshes,
 # holding one vertex in each: those two vertices must match (core.read_pins).
@@ -78,9 +130,9 @@ class BakeSettings:
     """The options of one bake, in one object.
 
     The operator reads its properties into one of these once
-    (preferences.bake_settings) and core and baking take their options only
+    (properties.bake_settings) and core and baking take their options only
     from it, so a new option is a field here and a property in
-    preferences.option_properties, not a keyword argument threaded through
+    properties.option_properties, not a keyword argument threaded through
     every call. The defaults are the properties' defaults: option_properties
     takes them from here. Frozen: one bake's options do not change while it
     runs. Values are not checked here: core checks the ranges (compute_morph)
@@ -103,11 +155,11 @@ class BakeSettings:
     enclosure_sides: int = ENGINE_LIMITS["default_enclosure_sides"]
     plane: str = "AUTO"
     # How vertices of the source find their partners in the target
-    # (core.CORRESPONDENCES): AUTO, by index where that works and matched
+    # (core.CORRESPONDENCES): INDEX_OR_MATCH (labelled Automatic), by index where that works and matched
     # otherwise; INDEX, vertex i of one mesh is vertex i of the other; MATCH,
     # always matched by shape (stickmorph.correspond), pins respected.
-    correspondence: str = "AUTO"
-    easing: str = "LINEAR"
+    correspondence: str = "INDEX_OR_MATCH"
+    easing: str = "NONE"  # timing.EASINGS: NONE or IN_OUT, the engine's "none" and "in-out"
     renderable: bool = True
     tube_radius: float = 0.01  # a fraction of the figures' size
     show_triangulation: bool = False

@@ -1,5 +1,6 @@
-"""The bake operator, object.stick_morph_bake, and the pin operators,
-mesh.stick_morph_pin_selected and object.stick_morph_clear_pins.
+"""The bake operator, object.stick_morph_bake, the pin operators,
+mesh.stick_morph_pin_selected and object.stick_morph_clear_pins, and
+scene.stick_morph_load_defaults.
 
 All checks (selection, faces, vertex counts, edge sets, pins, planarity, the
 engine's validation, matching and compatibility) and the morph itself run
@@ -18,65 +19,17 @@ bake reports what is missing as an ERROR instead of failing with a raw
 ImportError.
 """
 
-import os
 import time
 
 import bpy
 from bpy.props import IntProperty, StringProperty
 
-from . import dependencies
 from .common import BakeSettings, StickMorphError, is_pin_group, next_pin_name
-from .preferences import OPTION_NAMES, addon_preferences, bake_settings, option_properties
-
-PACKAGE_DIR = os.path.dirname(os.path.abspath(__file__))
-
-# The status of the last dependency check (set by register(), refreshed by a
-# bake that finds it failing); the panel shows it.
-_status = None
-
-
-def dependency_status(refresh=False, force=False):
-    """dependencies.check() of this package, cached: importing a missing
-    module again on every redraw of the panel would cost a file system scan.
-    refresh: check again if the last check failed; force: check again."""
-    global _status
-    if force or _status is None or (refresh and not _status.ok):
-        _status = dependencies.check(PACKAGE_DIR, __package__, bpy.app.binary_path or None)
-    return _status
-
-
-def resolve_pair(context, source_name, target_name):
-    """The source and target objects, from the names or else the selection
-    (the target is the active object). The panel's preview calls this too, so
-    it shows exactly what a bake would use. Raises StickMorphError."""
-    def named(name, role):
-        obj = bpy.data.objects.get(name)
-        if obj is None:
-            raise StickMorphError(f"there is no object named '{name}' ({role})")
-        return obj
-
-    if source_name or target_name:
-        if not (source_name and target_name):
-            raise StickMorphError("give both source and target, or neither (then the "
-                                  "selection is used)")
-        source, target = named(source_name, "source"), named(target_name, "target")
-    else:
-        selected = list(context.selected_objects)
-        active = context.active_object
-        if len(selected) != 2 or active not in selected:
-            raise StickMorphError(
-                f"select two mesh objects, the target last (active); {len(selected)} selected"
-                + ("" if active in selected or not selected else ", none of them active"))
-        target = active
-        source = selected[0] if selected[1] == active else selected[1]
-    for obj, role in ((source, "source"), (target, "target")):
-        if obj.type != "MESH":
-            raise StickMorphError(
-                f"not two mesh objects: the {role} '{obj.name}' is a {obj.type.lower()}, not a mesh")
-    if source == target:
-        raise StickMorphError(f"source and target are the same object '{source.name}'")
-    return source, target
-
+# The helpers the panel shares with the operators are helpers.py's (so that
+# ui.py need not import this module); dependency_status is re-exported for
+# scripts and tests that ask the operators' module.
+from .helpers import dependency_status, edited_meshes, resolve_pair  # noqa: F401
+from .properties import OPTION_NAMES, addon_preferences, bake_settings, option_properties
 
 class Progress:
     """The window manager's progress indicator, one call per stage.
@@ -230,7 +183,9 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
                                      target_world, target_edges, target_faces, target.name, settings,
                                      source_groups, target_groups)
         progress.stage("check", 15)
-        morph = core.compute_morph(prepared, settings)
+        # By index, or matched if Automatic's morph by index finds the pair
+        # incompatible that way (the bake's one compatibility check).
+        prepared, morph = core.morph_pair(prepared, settings)
         progress.stage("morph", 60)
         previous = baking.previous_results(source.name, target.name)
         count = settings.frame_count
@@ -287,12 +242,6 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
 
 
 # ------------------------------------------------------------------ pins ----
-
-def edited_meshes(context):
-    """The mesh objects in Edit Mode (multi-object editing), in the order
-    Blender lists them."""
-    return [obj for obj in (getattr(context, "objects_in_mode", None) or ()) if obj.type == "MESH"]
-
 
 def _listing(objects):
     return ", ".join(f"'{obj.name}'" for obj in objects)
@@ -406,7 +355,26 @@ class STICKMORPH_OT_clear_pins(bpy.types.Operator):
         return {"FINISHED"}
 
 
-classes = (STICKMORPH_OT_bake, STICKMORPH_OT_pin_selected, STICKMORPH_OT_clear_pins)
+class STICKMORPH_OT_load_defaults(bpy.types.Operator):
+    """Copy the add-on preferences' defaults into this scene's Stick Morph options"""
+    bl_idname = "scene.stick_morph_load_defaults"
+    bl_label = "Load Defaults"
+    bl_options = {"REGISTER", "UNDO"}
+
+    def execute(self, context):
+        prefs = addon_preferences(context)
+        if prefs is None:
+            self.report({"ERROR"}, "Stick Morph preferences are not available")
+            return {"CANCELLED"}
+        settings = context.scene.stick_morph
+        for name in OPTION_NAMES:
+            setattr(settings, name, getattr(prefs, name))
+        return {"FINISHED"}
+
+
+
+classes = (STICKMORPH_OT_bake, STICKMORPH_OT_pin_selected, STICKMORPH_OT_clear_pins,
+           STICKMORPH_OT_load_defaults)
 
 
 register, unregister = bpy.utils.register_classes_factory(classes)

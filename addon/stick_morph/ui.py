@@ -14,8 +14,9 @@ import textwrap
 
 import bpy
 
-from .common import StickMorphError, pin_names
-from .preferences import OPTION_NAMES
+from .common import OPTION_METHODS, PROPERTY_OPTIONS, StickMorphError, pin_names, property_applies
+from .helpers import dependency_status, edited_meshes, resolve_pair
+from .properties import OPTION_NAMES
 
 # Longest label of a property-split row that 3.4's default sidebar shows in
 # full: "Weights" and "Steiner" were, "Enclos…" (Enclosure Sides) was not
@@ -46,21 +47,18 @@ ADVANCED = tuple(name for name, _ in ADVANCED_SPLIT + ADVANCED_FULL + ADVANCED_L
 
 # Options that only some motions use: drawn greyed out (row.active = False,
 # still editable, as Blender greys out settings that have no effect) when
-# the data's motion is not one of them.
-RIGID_ONLY = ("rotation", "turns")
-NOT_LINEAR = ("steiner", "weights", "enclosure_sides", "show_triangulation")
+# the data's motion is not one of them. Both derive from the one table of
+# which engine option applies to which method (common.OPTION_METHODS).
+RIGID_ONLY = tuple(name for name, option in PROPERTY_OPTIONS.items() if OPTION_METHODS[option] == ("rigid",))
+NOT_LINEAR = tuple(name for name, option in PROPERTY_OPTIONS.items()
+                   if OPTION_METHODS[option] == ("rigid", "barycentric"))
 
 
 def row_active(data, name):
     """Whether the option `name` has an effect with the other options of data."""
-    motion = getattr(data, "motion", "RIGID")
-    if name in RIGID_ONLY:
-        return motion == "RIGID"
-    if name in NOT_LINEAR:
-        return motion != "LINEAR"
     if name == "tube_radius":
         return bool(getattr(data, "renderable", True))
-    return True
+    return property_applies(name, getattr(data, "motion", "RIGID"))
 
 
 def _wrap(context, text):
@@ -84,7 +82,6 @@ def _label_lines(layout, context, text, icon="NONE"):
 def draw_dependency_box(layout, context):
     """A box saying what is missing when numpy or the native module do not
     load (dependencies.check at enable time); nothing otherwise."""
-    from .operators import dependency_status
     status = dependency_status()
     if status.ok:
         return False
@@ -101,7 +98,6 @@ def pair_preview(context, settings):
     """(ok, text lines) saying which object a bake would use as the source and
     which as the target, resolved exactly as the operator does, or why it
     cannot."""
-    from .operators import resolve_pair
     source_name = settings.source.name if settings.source else ""
     target_name = settings.target.name if settings.target else ""
     try:
@@ -118,7 +114,6 @@ def pin_preview(context, settings):
     group names only (the panel redraws often; the bake reads and checks
     the groups' vertices, core.read_pins): how many, a line saying so, and
     what a bake would refuse."""
-    from .operators import edited_meshes, resolve_pair
     objects = edited_meshes(context)
     if len(objects) != 2:
         try:

@@ -3,6 +3,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <array>
+#include <climits>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -14,8 +16,14 @@
 #include "stickmorph/errors.h"
 #include "stickmorph/figure_correspondence.h"
 #include "stickmorph/figure_io.h"
+#include "stickmorph/figure_parts.h"
 
 namespace stickmorph::python {
+
+// conversions.cpp's edge-list conversion (shape, dtype and per-row messages
+// as every other binding's), declared here because conversions.h is shared
+// with bindings this change does not touch.
+std::vector<std::array<std::int64_t, 2>> to_edges(py::handle object, const std::string& name);
 
 void bind_figures(py::module_& m) {
   py::class_<sm::CompatibilityReport>(m, "CompatibilityReport",
@@ -306,6 +314,52 @@ Raises:
     differ, or the number of parts; the message says which), "mirror_image",
     "exterior_differs", "nesting_differs" (the matched parts nest otherwise)
     or "pins_unsatisfiable".)doc");
+
+  // The engine's figure_parts (figure_parts.h) for callers that number
+  // parts as the engine's messages do ("part 1"): the Blender add-on's
+  // report, which used to repeat the union-find in Python.
+  m.def(
+      "figure_parts",
+      [](long long vertex_count, const py::object& edges) {
+        if (vertex_count < 0 || vertex_count > INT_MAX)
+          throw sm::InvalidArgumentError("vertex_count must be from 0 to " + std::to_string(INT_MAX) + ", got " +
+                                         std::to_string(vertex_count));
+        const std::vector<std::array<std::int64_t, 2>> indices = to_edges(edges, "edges");
+        // Only the vertex count and the edges matter to the parts: the
+        // positions stay zero and the figure is not validated.
+        sm::StickFigure figure;
+        figure.vertices.assign(std::size_t(vertex_count), sm::Vec2{0.0, 0.0});
+        for (std::size_t i = 0; i < indices.size(); ++i) {
+          for (const std::int64_t v : indices[i])
+            if (v < 0 || v >= vertex_count)
+              throw sm::InvalidArgumentError("edge " + std::to_string(i) + " names vertex " + std::to_string(v) +
+                                             ", but there are " + std::to_string(vertex_count) + " vertices");
+          figure.edges.push_back({int(indices[i][0]), int(indices[i][1])});
+        }
+        const sm::FigureParts parts = sm::figure_parts(figure);
+        py::list result;
+        for (const std::vector<int>& part : parts.vertices) result.append(to_list(part));
+        return result;
+      },
+      py::arg("vertex_count"), py::arg("edges"),
+      R"doc(The parts (connected components) of a figure, numbered as the engine's messages number them.
+
+Only the vertex count and the edges matter: the figure is not validated
+(no positions are given), so this answers for any graph on the vertices.
+
+Args:
+  vertex_count: int, the number of vertices (0 or more).
+  edges: #E by 2 integer array-like of vertex indices, each from 0 to
+    vertex_count - 1 ([] for none).
+
+Returns:
+  list of parts, each a list of its vertex indices in ascending order, the
+  parts in order of their smallest vertex ("part 0" holds vertex 0). A
+  vertex on no edge (a dot) is a part of its own.
+
+Raises:
+  InvalidArgumentError: a negative vertex_count, an edge naming a vertex
+    outside 0..vertex_count-1, or an array of the wrong shape or type.)doc");
 }
 
 }  // namespace stickmorph::python

@@ -13,7 +13,7 @@ def bake(**kwargs):
     return bpy.context.view_layer.objects.active
 
 
-def expected_frames(addon, source, target, frame_count, easing="LINEAR", plane="AUTO", motion="RIGID", **options):
+def expected_frames(addon, source, target, frame_count, easing="NONE", plane="AUTO", motion="RIGID", **options):
     """The engine's morph mapped to world space, computed here from the meshes'
     world coordinates and the engine directly (not through compute_morph).
 
@@ -34,14 +34,14 @@ def expected_frames(addon, source, target, frame_count, easing="LINEAR", plane="
     src_xy = np.stack([(src - o) @ u, (src - o) @ v], axis=1)
     tgt_xy = np.stack([(tgt - o) @ u, (tgt - o) @ v], axis=1)
     k = np.arange(frame_count) / (frame_count - 1)
-    eased = k if easing == "LINEAR" else k * k * (3 - 2 * k)
+    eased = k if easing == "NONE" else k * k * (3 - 2 * k)
     if motion == "RIGID":
         morph = engine.morph(src_xy, tgt_xy, edges, frames=frame_count, method="rigid",
-                             easing="in-out" if easing == "EASE_IN_OUT" else None, **options)
+                             easing="in-out" if easing == "IN_OUT" else None, **options)
         frames = morph["frames"]
         times = eased
     else:
-        m = frame_count if easing == "LINEAR" else (frame_count - 1) * core.EASE_OVERSAMPLING + 1
+        m = frame_count if easing == "NONE" else (frame_count - 1) * core.EASE_OVERSAMPLING + 1
         morph = engine.morph(src_xy, tgt_xy, edges, frames=m, method=motion.lower(), **options)
         index = np.rint(eased * (m - 1)).astype(int)
         frames = morph["frames"][index]
@@ -159,8 +159,8 @@ def test_ease_in_out(scene, addon, motion):
     # BARYCENTRIC: frames picked from an oversampled uniform morph.
     source, target = make_pair("polygon_dangling")
     frame_count = 9
-    result = bake(frame_count=frame_count, frame_start=1, easing="EASE_IN_OUT", motion=motion)
-    expected, _, _, _, morph = expected_frames(addon, source, target, frame_count, easing="EASE_IN_OUT",
+    result = bake(frame_count=frame_count, frame_start=1, easing="IN_OUT", motion=motion)
+    expected, _, _, _, morph = expected_frames(addon, source, target, frame_count, easing="IN_OUT",
                                                motion=motion)
     assert len(morph["frames"]) == (frame_count if motion == "RIGID"
                                     else (frame_count - 1) * addon.core.EASE_OVERSAMPLING + 1)

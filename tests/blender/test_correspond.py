@@ -170,7 +170,7 @@ def test_by_shape_matches_a_shuffled_numbering(scene, addon):
     source = make_mesh_object("Source", source_xy, edges, source_matrix())
     target = make_mesh_object("Target", turned, new_of_old[np.array(edges)].tolist(), target_matrix())
     bpy.context.view_layer.update()
-    for setting in ("MATCH", "AUTO"):
+    for setting in ("MATCH", "INDEX_OR_MATCH"):
         select(source, target)
         result = bake(frame_count=3, correspondence=setting)
         assert len(result.data.vertices) == 7

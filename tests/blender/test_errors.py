@@ -69,20 +69,24 @@ def test_poll_explains_itself(scene, addon):
 def test_an_incompatible_pair_is_checked_once(scene, addon, monkeypatch):
     # By index the morph checks compatibility as it starts and its exception
     # carries the report (kind, vertices, reason): the bake needs no check of
-    # its own. Automatic checks by index once, to choose, and then matches
-    # this pair (the tree's arms pair the other way round).
+    # its own. Automatic morphs by index too and, when that morph refuses
+    # the pair, matches it and morphs the match (issue 27: no separate
+    # check_compatibility first), so this pair (the tree's arms pair the
+    # other way round) is checked once and morphed twice.
     engine = addon_import("core").load_engine()
     calls = []
-    check = engine.check_compatibility
+    check, morph = engine.check_compatibility, engine.morph
     monkeypatch.setattr(engine, "check_compatibility",
-                        lambda *args, **kwargs: calls.append(args) or check(*args, **kwargs))
+                        lambda *args, **kwargs: calls.append("check") or check(*args, **kwargs))
+    monkeypatch.setattr(engine, "morph", lambda *args, **kwargs: calls.append("morph") or morph(*args, **kwargs))
     source_xy, target_xy, edges = TREE
     source = make_mesh_object("Source", source_xy, edges)
     target = make_mesh_object("Target", np.asarray(target_xy) * [-1.0, 1.0], edges)
     select(source, target)
     message = bake_fails(correspondence="INDEX")
     assert "'Target' is a mirror image of 'Source'" in message and "(vertex " in message, message
-    assert calls == []
+    assert calls == ["morph"]
+    calls.clear()
     assert bpy.ops.object.stick_morph_bake(frame_count=3) == {"FINISHED"}
-    assert len(calls) == 1
+    assert calls == ["morph", "morph"]
     assert bpy.context.scene.stick_morph.last_correspondence == "Matched: 7 (0 dummies)"

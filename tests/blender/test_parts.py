@@ -169,7 +169,7 @@ def test_a_mesh_of_dots_only_bakes(factory_scene, addon):
         assert (np.linalg.norm(rendered - dot, axis=1) <= 1.01 * radius).sum() >= 20
 
 
-@pytest.mark.parametrize("correspondence", ["AUTO", "MATCH"])
+@pytest.mark.parametrize("correspondence", ["INDEX_OR_MATCH", "MATCH"])
 def test_a_ring_in_a_ring_bakes_and_its_inner_ring_turns(factory_scene, addon, correspondence):
     scene = factory_scene
     source = make("Ring", RINGS_SOURCE, RINGS_EDGES, source_matrix())
@@ -181,7 +181,7 @@ def test_a_ring_in_a_ring_bakes_and_its_inner_ring_turns(factory_scene, addon, c
     check_frames(scene, result, source, target, 7, [list(range(6)), list(range(6, 10))], tolerance)
     if correspondence == "MATCH":  # the rings pair as numbered: the inner one turns, not jumps
         assert attribute(result, "stick_morph_target_vertex").tolist() == list(range(10))
-    assert scene.stick_morph.last_correspondence == ("By index" if correspondence == "AUTO"
+    assert scene.stick_morph.last_correspondence == ("By index" if correspondence == "INDEX_OR_MATCH"
                                                       else "Matched: 10 (0 dummies)")
     # The inner ring stays inside the outer one in every frame.
     for k in range(7):
@@ -228,7 +228,7 @@ def test_pins_on_dots_choose_which_dot_goes_where(factory_scene, addon):
     assert np.abs(key_world(result, 4) - world_coords(target)[target_vertex]).max() <= tolerance
 
 
-@pytest.mark.parametrize("correspondence", ["AUTO", "INDEX", "MATCH"])
+@pytest.mark.parametrize("correspondence", ["INDEX_OR_MATCH", "INDEX", "MATCH"])
 def test_an_inner_ring_moved_outside_is_an_error_and_changes_nothing(factory_scene, addon, correspondence):
     source = make("Ring", RINGS_SOURCE, RINGS_EDGES, source_matrix())
     target = make("Ring.001", RINGS_OUTSIDE, RINGS_EDGES, target_matrix())
@@ -245,6 +245,6 @@ def test_an_inner_ring_moved_outside_is_an_error_and_changes_nothing(factory_sce
         # By index, and Automatic, which checks by index first: the part that changes face.
         assert "Stick Morph: 'Ring' and 'Ring.001': a part changes face: the parts nest differently: " \
                "part 1 (vertices 6, 7, 8, 9) lies inside part 0" in message, message
-        assert ("matched by shape" in message) == (correspondence == "AUTO"), message
+        assert ("matched by shape" in message) == (correspondence == "INDEX_OR_MATCH"), message
     assert snapshot() == before
     assert not [o for o in bpy.data.objects if o.get("stick_morph_role")]

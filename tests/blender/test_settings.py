@@ -53,6 +53,26 @@ def test_bake_settings_have_every_option_with_the_properties_defaults(scene, add
                 assert got == expected and type(got) is type(expected), (where, name, got)
 
 
+def test_renamed_enum_items_keep_their_order_and_defaults(scene, addon, addon_name):
+    # Issue 27 renamed Correspondence AUTO to INDEX_OR_MATCH (the engine's
+    # correspond="auto" is MATCH here) and Easing LINEAR / EASE_IN_OUT to
+    # NONE / IN_OUT (the engine's easing names; LINEAR is a motion). A saved
+    # file stores an enum's index, so the order and the defaults must stay.
+    holders = {
+        "operator": bpy.ops.object.stick_morph_bake.get_rna_type().properties,
+        "scene settings": scene.stick_morph.bl_rna.properties,
+        "preferences": bpy.context.preferences.addons[addon_name].preferences.bl_rna.properties,
+    }
+    for where, properties in holders.items():
+        correspondence, easing = properties["correspondence"], properties["easing"]
+        assert [item.identifier for item in correspondence.enum_items] == ["INDEX_OR_MATCH", "INDEX", "MATCH"], where
+        assert [item.name for item in correspondence.enum_items] == ["Automatic", "By Index", "By Shape"], where
+        assert correspondence.default == "INDEX_OR_MATCH", where
+        assert [item.identifier for item in easing.enum_items] == ["NONE", "IN_OUT"], where
+        assert [item.name for item in easing.enum_items] == ["Linear", "Ease In-Out"], where
+        assert easing.default == "NONE", where
+
+
 def test_bake_settings_read_each_option_from_its_property(addon):
     preferences = addon_import("preferences")
     # A distinct value per property: a field read from the wrong one shows.

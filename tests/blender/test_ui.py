@@ -189,7 +189,7 @@ def test_panels_draw_every_option_without_decorators(scene, addon):
 
 
 def test_panel_says_what_is_missing(scene, addon, monkeypatch):
-    operators = addon_import("operators")
+    helpers = addon_import("helpers")
     dependencies = addon_import("dependencies")
     failing = dependencies.Dependencies(
         numpy_error=None, engine_error="ModuleNotFoundError: No module named 'stickmorph'",
@@ -197,7 +197,7 @@ def test_panel_says_what_is_missing(scene, addon, monkeypatch):
                     "module": "stickmorph.cpython-313-x86_64-linux-gnu.so", "built_on": "Debian 13, GCC 14"},
         module_files=["stickmorph.cpython-313-x86_64-linux-gnu.so"], python="3.11", python_tag="cpython-311",
         blender="/usr/bin/blender")
-    monkeypatch.setattr(operators, "_status", failing)
+    monkeypatch.setattr(helpers, "_status", failing)
     # The bake checks a failed status again (numpy may have been installed since).
     monkeypatch.setattr(dependencies, "check", lambda *args, **kwargs: failing)
     labels = [r[1] for r in draw(bpy.types.VIEW3D_PT_stick_morph, bpy.context) if r[0] == "label"]

@@ -50,7 +50,7 @@ def test_the_package_imports_without_bpy():
     # at import time fails the child).
     code = ("import sys; sys.path.insert(0, sys.argv[1]); import stick_morph; import stick_morph.core as c; "
             "assert 'bpy' not in sys.modules, 'bpy imported'; "
-            "print(stick_morph.bl_info['name'], c.ease(0.5, 'EASE_IN_OUT'))")
+            "print(stick_morph.bl_info['name'], c.ease(0.5, 'IN_OUT'))")
     out = subprocess.run([sys.executable, "-c", code, str(ADDON.parent)], capture_output=True, text=True,
                          timeout=60)
     assert out.returncode == 0, out.stderr
@@ -82,7 +82,7 @@ def test_the_addons_copy_of_the_limits_is_the_engines():
 def test_bake_settings_defaults_and_frozen():
     settings = core.BakeSettings()
     assert core.BakeSettings is common.BakeSettings
-    assert (settings.frame_count, settings.frame_start, settings.easing, settings.plane) == (50, 1, "LINEAR", "AUTO")
+    assert (settings.frame_count, settings.frame_start, settings.easing, settings.plane) == (50, 1, "NONE", "AUTO")
     # The engine's default motion, turning the short way with no extra turns.
     assert (settings.motion, settings.rotation, settings.turns) == ("RIGID", "SHORT", 0)
     engine = core.load_engine()
@@ -183,14 +183,14 @@ def test_edge_sets_and_easing():
     message = core.compare_edge_sets([[0, 1], [1, 2]], [[0, 1], [0, 2]], "A", "B")
     assert "only in 'A': 1-2" in message and "only in 'B': 0-2" in message
     t = np.linspace(0, 1, 11)
-    assert np.array_equal(core.ease(t, "LINEAR"), t)
-    eased = core.ease(t, "EASE_IN_OUT")
+    assert np.array_equal(core.ease(t, "NONE"), t)
+    eased = core.ease(t, "IN_OUT")
     assert eased[0] == 0 and eased[-1] == 1 and np.all(np.diff(eased) > 0)
     for motion in ("BARYCENTRIC", "LINEAR"):
-        index = core.ease_sample_indices(11, "EASE_IN_OUT", motion)
-        assert core.engine_frame_count(11, "EASE_IN_OUT", motion) == 10 * core.EASE_OVERSAMPLING + 1
-        assert index[0] == 0 and index[-1] == core.engine_frame_count(11, "EASE_IN_OUT", motion) - 1
-        assert np.array_equal(core.ease_sample_indices(7, "LINEAR", motion), np.arange(7))
+        index = core.ease_sample_indices(11, "IN_OUT", motion)
+        assert core.engine_frame_count(11, "IN_OUT", motion) == 10 * core.EASE_OVERSAMPLING + 1
+        assert index[0] == 0 and index[-1] == core.engine_frame_count(11, "IN_OUT", motion) - 1
+        assert np.array_equal(core.ease_sample_indices(7, "NONE", motion), np.arange(7))
     # RIGID: the engine eases, exactly the output frames are computed.
     for easing in core.EASINGS:
         assert core.engine_frame_count(11, easing, "RIGID") == 11
@@ -241,7 +241,7 @@ def test_morph_starts_at_the_source_and_ends_at_the_target_in_world_space():
     assert np.allclose(np.diff(heights[:, 0]), (heights[-1, 0] - heights[0, 0]) / 6, atol=1e-9 * size)
     assert morph.stats["steiner_vertices"] >= 0 and morph.triangulation is not None
     # Easing picks frames of a finer uniform morph: the first step is shorter.
-    eased = core.compute_morph(prepared, dataclasses.replace(settings, easing="EASE_IN_OUT"))
+    eased = core.compute_morph(prepared, dataclasses.replace(settings, easing="IN_OUT"))
     assert np.abs(eased.frames_world[[0, -1]] - morph.frames_world[[0, -1]]).max() <= 1e-9 * size
     step = np.linalg.norm(np.diff(eased.frames_world, axis=0), axis=2).max(axis=1)
     linear_step = np.linalg.norm(np.diff(morph.frames_world, axis=0), axis=2).max(axis=1)
@@ -253,7 +253,7 @@ def test_morph_starts_at_the_source_and_ends_at_the_target_in_world_space():
     ("BARYCENTRIC", {"steiner": "aronov"}), ("BARYCENTRIC", {"motion": "RIGID"}),
     ("BARYCENTRIC", {"motion": "LINEAR"}),
     ("RIGID", {"rotation": "CW"}), ("RIGID", {"rotation": "CCW", "turns": 1}), ("RIGID", {"turns": -1}),
-    ("RIGID", {"easing": "EASE_IN_OUT"}),
+    ("RIGID", {"easing": "IN_OUT"}),
 ])
 def test_the_settings_reach_the_engine(motion, changes):
     # (The tree's short way is counterclockwise: CCW alone would change nothing.)
@@ -278,7 +278,7 @@ def test_options_a_motion_does_not_use_are_not_given_to_the_engine(monkeypatch):
     morph = engine.morph
     monkeypatch.setattr(engine, "morph", lambda *args, **kwargs: calls.append(kwargs) or morph(*args, **kwargs))
     prepared = prepare()
-    settings = core.BakeSettings(frame_count=4, rotation="CW", turns=3, easing="EASE_IN_OUT", steiner="sg2001",
+    settings = core.BakeSettings(frame_count=4, rotation="CW", turns=3, easing="IN_OUT", steiner="sg2001",
                                  weights="uniform", enclosure_sides=7)
     for motion in core.MOTIONS:
         core.compute_morph(prepared, dataclasses.replace(settings, motion=motion))
@@ -298,7 +298,7 @@ def plane_xy(morph, prepared):
 def test_the_default_motion_is_rigid_and_is_the_engines_rigid_morph():
     prepared = prepare()
     engine = core.load_engine()
-    for easing, engine_easing in (("LINEAR", None), ("EASE_IN_OUT", "in-out")):
+    for easing, engine_easing in (("NONE", None), ("IN_OUT", "in-out")):
         morph = core.compute_morph(prepared, core.BakeSettings(frame_count=9, easing=easing))
         assert morph.motion == "RIGID" and morph.stats["method"] == "rigid"
         assert morph.stats["rigid"]["easing"] == (engine_easing or "none")
@@ -324,7 +324,7 @@ def test_barycentric_reproduces_the_previous_bakes():
     engine = core.load_engine()
     for easing in core.EASINGS:
         morph = core.compute_morph(prepared, core.BakeSettings(frame_count=7, motion="BARYCENTRIC", easing=easing))
-        m = 7 if easing == "LINEAR" else 6 * core.EASE_OVERSAMPLING + 1
+        m = 7 if easing == "NONE" else 6 * core.EASE_OVERSAMPLING + 1
         old = engine.morph(prepared.source_xy, prepared.target_xy, prepared.edges, frames=m,
                            steiner="improved", weights="mvc", enclosure_sides=6, method="barycentric",
                            verify=True)
@@ -394,7 +394,7 @@ def half_turn_pair():
 def test_linear_motion_lists_its_invalid_frames():
     prepared = half_turn_pair()
     engine = core.load_engine()
-    for frame_count, easing, invalid in ((5, "LINEAR", [2]), (7, "EASE_IN_OUT", [3]), (6, "LINEAR", [])):
+    for frame_count, easing, invalid in ((5, "NONE", [2]), (7, "IN_OUT", [3]), (6, "NONE", [])):
         morph = core.compute_morph(prepared, core.BakeSettings(frame_count=frame_count, motion="LINEAR",
                                                                easing=easing, show_triangulation=True))
         assert morph.motion == "LINEAR" and morph.triangulation is None

@@ -37,9 +37,19 @@ def prepare(target=DENSE_WORLD, target_edges=DENSE_EDGES, source=SOURCE_WORLD, s
                              core.BakeSettings(**settings), source_groups, target_groups)
 
 
+def prepare_and_morph(target=DENSE_WORLD, target_edges=DENSE_EDGES, source=SOURCE_WORLD, source_edges=TREE_EDGES,
+                      source_groups=None, target_groups=None, **settings):
+    """(pair, MorphResult) as a bake gets them: prepare_pair, then morph_pair,
+    which for Automatic morphs by index and falls back on the matching."""
+    settings = core.BakeSettings(**{"frame_count": 3, **settings})
+    prepared = core.prepare_pair(source, source_edges, 0, "Arm", target, target_edges, 0, "Arm pose",
+                                 settings, source_groups, target_groups)
+    return core.morph_pair(prepared, settings)
+
+
 def fails(**changes):
     with pytest.raises(core.StickMorphError) as error:
-        prepare(**changes)
+        prepare_and_morph(**changes)
     return str(error.value)
 
 
@@ -69,11 +79,11 @@ class Check:
 @pytest.mark.parametrize("setting, same_count, same_edges, pinned, compatible, expected, calls", [
     ("INDEX", False, False, True, False, (False, ""), 0),  # prepare_pair refused what INDEX cannot take
     ("MATCH", True, True, False, True, (True, ""), 0),
-    ("AUTO", True, True, False, True, (False, "compatible by index"), 1),
-    ("AUTO", True, True, False, False, (True, "they are not compatible by index"), 1),
-    ("AUTO", False, True, False, True, (True, "the vertex counts differ"), 0),
-    ("AUTO", True, False, False, True, (True, "the edges differ"), 0),
-    ("AUTO", True, True, True, True, (True, "pins are given"), 0),
+    ("INDEX_OR_MATCH", True, True, False, True, (False, "compatible by index"), 1),
+    ("INDEX_OR_MATCH", True, True, False, False, (True, "they are not compatible by index"), 1),
+    ("INDEX_OR_MATCH", False, True, False, True, (True, "the vertex counts differ"), 0),
+    ("INDEX_OR_MATCH", True, False, False, True, (True, "the edges differ"), 0),
+    ("INDEX_OR_MATCH", True, True, True, True, (True, "pins are given"), 0),
 ])
 def test_choose_correspondence(setting, same_count, same_edges, pinned, compatible, expected, calls):
     check = Check(compatible)
@@ -85,8 +95,8 @@ def test_choose_correspondence(setting, same_count, same_edges, pinned, compatib
 
 
 def test_the_default_is_automatic():
-    assert core.BakeSettings().correspondence == "AUTO" == core.CORRESPONDENCES[0]
-    assert set(core.CORRESPONDENCES) == {"AUTO", "INDEX", "MATCH"}
+    assert core.BakeSettings().correspondence == "INDEX_OR_MATCH" == core.CORRESPONDENCES[0]
+    assert set(core.CORRESPONDENCES) == {"INDEX_OR_MATCH", "INDEX", "MATCH"}
     assert "unknown correspondence 'index'" in fails(correspondence="index")
 
 
@@ -220,14 +230,18 @@ def test_meshes_with_different_vertex_counts_are_matched_and_keep_every_vertex()
 
 
 def test_automatic_takes_a_compatible_pair_by_index_after_one_check(monkeypatch):
+    # The one check is the morph's own (issue 27): no check_compatibility,
+    # no matching, one morph.
     engine = core.load_engine()
     calls = []
-    check, correspond = engine.check_compatibility, engine.correspond
+    check, correspond, morph = engine.check_compatibility, engine.correspond, engine.morph
     monkeypatch.setattr(engine, "check_compatibility", lambda *a, **k: calls.append("check") or check(*a, **k))
     monkeypatch.setattr(engine, "correspond", lambda *a, **k: calls.append("correspond") or correspond(*a, **k))
-    prepared = prepare(target=TARGET_WORLD, target_edges=TREE_EDGES[::-1, ::-1])  # the same edges, listed otherwise
+    monkeypatch.setattr(engine, "morph", lambda *a, **k: calls.append("morph") or morph(*a, **k))
+    # The same edges, listed otherwise.
+    prepared, _ = prepare_and_morph(target=TARGET_WORLD, target_edges=TREE_EDGES[::-1, ::-1])
     assert not prepared.matching.matched and prepared.matching.why == "compatible by index"
-    assert calls == ["check"]
+    assert calls == ["morph"]
     assert np.array_equal(prepared.matching.source_vertex, np.arange(7))
     assert np.array_equal(prepared.edges, TREE_EDGES)  # the source's edges, as before issue 13
     assert core.correspondence_summary(prepared.matching) == ("By index", "by index")
@@ -241,8 +255,9 @@ def test_automatic_matches_a_pair_that_is_not_compatible_by_index():
     # The tree's target mirrored: by index the junction's arms run the other
     # way round, but pairing two arms the other way makes it compatible.
     mirrored = in_space(TREE_TARGET * [-1.0, 1.0], [4.0, 1.0, -0.5])
-    prepared = prepare(target=mirrored, target_edges=TREE_EDGES)
+    prepared, morph = prepare_and_morph(target=mirrored, target_edges=TREE_EDGES)
     assert prepared.matching.matched and prepared.matching.why == "they are not compatible by index"
+    assert len(morph.frames_world) == 3
     assert not np.array_equal(prepared.matching.target_vertex, np.arange(7))
     assert prepared.matching.stats["source_dummies"] == prepared.matching.stats["target_dummies"] == 0
     assert core.correspondence_summary(prepared.matching, "Arm", "Arm pose") == (

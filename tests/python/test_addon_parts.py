@@ -118,7 +118,7 @@ def test_a_dotted_i_bakes_by_index(motion):
         assert engine.check_compatibility(prepared.source_xy, xy, prepared.edges)
 
 
-@pytest.mark.parametrize("correspondence", ["AUTO", "MATCH"])
+@pytest.mark.parametrize("correspondence", ["INDEX_OR_MATCH", "MATCH"])
 def test_dots_alone_bake(correspondence):
     # Three vertices and no edge: three parts, each a dot.
     source = np.array([[0.0, 0.0], [2.0, 0.0], [1.0, 1.6]])
@@ -191,7 +191,7 @@ def test_a_part_that_changes_face_is_refused_naming_the_objects_and_the_part():
     message = str(error.value)
     assert message.startswith("'Ring' and 'Ring.001': a part changes face: "), message
     assert "part 1" in message and "incompatible figures: incompatible" not in message
-    # Automatic checks by index, then tries to match, which cannot help: the
+    # Automatic morphs by index, then tries to match, which cannot help: the
     # refusal by index (in the meshes' vertex numbers) first, then the
     # matching's, or only that it fails the same way.
     engine = core.load_engine()
@@ -200,7 +200,7 @@ def test_a_part_that_changes_face_is_refused_naming_the_objects_and_the_part():
     match_kind, match_reason = refusal.value.kind, refusal.value.reason.removeprefix("correspond: ")
     assert "part" in match_reason
     with pytest.raises(core.StickMorphError) as error:
-        prepare(RINGS_SOURCE, RINGS_OUTSIDE, RINGS_EDGES)
+        core.morph_pair(prepare(RINGS_SOURCE, RINGS_OUTSIDE, RINGS_EDGES), core.BakeSettings(frame_count=3))
     by_index = f"'Ring' and 'Ring.001': a part changes face: {report.reason}"
     if match_kind == "nesting_differs":
         assert str(error.value) == by_index + " (matched by shape, the parts nest differently too)"
