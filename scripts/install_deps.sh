@@ -23,7 +23,7 @@ packages=(
   python3-dev
   python3-numpy
   python3-pytest
-  python3-matplotlib  # the plots of BENCHMARKS.md (scripts/make_benchmarks.py)
+  python3-matplotlib  # the plots of BENCHMARKS.md (bench/make_benchmarks.py)
   libegl1 libegl-mesa0  # headless Workbench/EEVEE render through surfaceless EGL
   xvfb xauth          # the GUI test of Adjust Last Operation (xvfb-run)
   debootstrap         # scripts/blender_chroot.sh: Debian 13 and sid for Blender 4.3 and 5.2

@@ -25,7 +25,7 @@
 // hub and spoke ends, the spiral's ends) the partner found is compared with
 // it. stdout gets a Markdown table, the fitted growth exponent per family
 // and whether the 1000-vertex pairs match in under a second (the issue's
-// requirement); --json FILE writes everything for scripts/make_benchmarks.py.
+// requirement); --json FILE writes everything for bench/make_benchmarks.py.
 //
 //   stickmorph_benchmark_correspondence [--sizes 10,30,100,300,1000,3000,10000]
 //       [--families polygon,spiral,tree,mesh,wheel] [--repeat N] [--json FILE]

@@ -3,7 +3,7 @@
     STICKMORPH_CORPUS_DIR=out/motion_corpus bash scripts/blender_tests.sh -k corpus
 
 runs, for every NAME.source.json / NAME.target.json pair in that folder (for
-example the corpus `scripts/motion_corpus.py` writes), the checks of
+example the corpus `bench/motion_corpus.py` writes), the checks of
 test_bake.test_bake_matches_engine_in_world_space: the source and target are
 placed with different tilted world matrices, baked through the operator, and
 every frame must equal the engine's morph in world space, be a stick figure

@@ -209,7 +209,7 @@ TEST_CASE("correspond_figures on parts says what cannot be matched", "[part_brid
 }
 
 TEST_CASE("bridges round a lone vertex keep their order in both figures", "[part_bridges]") {
-  // Found by scripts/parts_stress.py: five dots, three bridged to vertex 1.
+  // Found by bench/parts_stress.py: five dots, three bridged to vertex 1.
   // Its wedges between bridges were once taken the wrong way round, and the
   // bridged figures then had other cyclic orders at vertex 1.
   const StickFigure source = figure({{327, -528}, {0, 0}, {8, -100}, {-1, 0}, {-4, 2}}, {});

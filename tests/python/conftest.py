@@ -13,6 +13,7 @@ import pytest
 REPO = pathlib.Path(__file__).resolve().parents[2]
 BUILD = pathlib.Path(os.environ.get("STICKMORPH_BUILD_DIR", REPO / "build")).resolve()
 DATA = REPO / "tests" / "data"
+BENCH = REPO / "bench"  # the benchmark and corpus tooling (bench/README.md)
 
 # The extension module is built into <build>/python (native/CMakeLists.txt).
 sys.path.insert(0, str(BUILD / "python"))
@@ -34,8 +35,8 @@ def data_dir():
 
 
 def load_script(name):
-    """scripts/NAME.py imported as a module, for the tests of the benchmark scripts."""
-    spec = importlib.util.spec_from_file_location(name, REPO / "scripts" / f"{name}.py")
+    """bench/NAME.py imported as a module, for the tests of the benchmark scripts."""
+    spec = importlib.util.spec_from_file_location(name, BENCH / f"{name}.py")
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module

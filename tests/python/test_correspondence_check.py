@@ -1,5 +1,5 @@
-"""Tests of scripts/correspondence_check.py (the independent checker of `morph --correspond
-auto`) and scripts/correspondence_corpus.py (its corpus).
+"""Tests of bench/correspondence_check.py (the independent checker of `morph --correspond
+auto`) and bench/correspondence_corpus.py (its corpus).
 
 The checker's geometry is tested on hand-made tiny figures and hand-made morph outputs, with
 cases that must fail (a dummy off its edge, a missing source vertex, a crossing frame, a
@@ -409,7 +409,7 @@ def test_flattening_tolerance_changes_the_vertex_count():
 
 
 def test_corpus_command_line(tmp_path):
-    r = subprocess.run([sys.executable, str(REPO / "scripts" / "correspondence_corpus.py"), str(tmp_path),
+    r = subprocess.run([sys.executable, str(REPO / "bench" / "correspondence_corpus.py"), str(tmp_path),
                         "--seed", "2", "--count-per-family", "1"],
                        capture_output=True, text=True, timeout=TIMEOUT_SECONDS)
     assert r.returncode == 0, r.stderr
@@ -496,12 +496,12 @@ def test_runner_reports_a_hang_and_a_match_that_should_be_a_refusal(tmp_path):
 
 def test_checker_end_to_end_with_the_built_cli(cli, tmp_path):
     # Needs `stickmorph morph --correspond auto`: fails until the CLI has it.
-    r = subprocess.run([sys.executable, str(REPO / "scripts" / "correspondence_corpus.py"), str(tmp_path / "corpus"),
+    r = subprocess.run([sys.executable, str(REPO / "bench" / "correspondence_corpus.py"), str(tmp_path / "corpus"),
                         "--seed", "5", "--count-per-family", "2"],
                        capture_output=True, text=True, timeout=TIMEOUT_SECONDS)
     assert r.returncode == 0, r.stderr
     report = tmp_path / "report.json"
-    r = subprocess.run([sys.executable, str(REPO / "scripts" / "correspondence_check.py"), str(tmp_path / "corpus"),
+    r = subprocess.run([sys.executable, str(REPO / "bench" / "correspondence_check.py"), str(tmp_path / "corpus"),
                         "--stickmorph", str(cli), "--frames", "8", "--timeout", "120", "--json", str(report)],
                        capture_output=True, text=True, timeout=TIMEOUT_SECONDS * 2)
     assert r.returncode == 0, r.stdout[-6000:] + r.stderr[-2000:]

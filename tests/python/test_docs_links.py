@@ -2,7 +2,7 @@
 
 The documents once linked the CLI contract and the paper outside the
 repository (../shared/...), which dangles in any clone that is not next to
-that folder. So, for README.md and every docs/**/*.md:
+that folder. So, for README.md, bench/README.md and every docs/**/*.md:
 
 - each Markdown link or image target ([text](target), [ref]: target, and the
   href/src of inline HTML) is a relative path to a file or folder that git
@@ -35,7 +35,7 @@ PARENT_PATH = re.compile(r"(?<![\w./-])((?:\.\./)+[\w./-]*)")
 
 
 def documents():
-    return [REPO / "README.md", *sorted((REPO / "docs").rglob("*.md"))]
+    return [REPO / "README.md", REPO / "bench" / "README.md", *sorted((REPO / "docs").rglob("*.md"))]
 
 
 def tracked_paths():

@@ -1,4 +1,4 @@
-"""Tests of the "Correspondence" section that scripts/make_benchmarks.py writes into
+"""Tests of the "Correspondence" section that bench/make_benchmarks.py writes into
 BENCHMARKS.md from stickmorph_benchmark_correspondence's correspondence.json (issue 13): on a
 tiny hand-made correspondence.json whose numbers are known, and once through the script's
 command line with a minimal data folder. Needs only Debian's python3 with matplotlib, no build.
@@ -147,7 +147,7 @@ def write_data(folder, correspondence):
     (folder / "morph.jsonl").write_text(json.dumps(record) + "\n")
     (folder / "polygon_pairs.json").write_text(json.dumps({"repeat": 1, "pairs": []}))
     (folder / "run.json").write_text(json.dumps({
-        "command": "bash scripts/benchmarks.sh --quick", "date": "d", "commit": "c", "machine": "m", "compiler": "c",
+        "command": "bash bench/benchmarks.sh --quick", "date": "d", "commit": "c", "machine": "m", "compiler": "c",
         "build": "b", "frames": 5, "aronov_max": 300, "sg2001_max": 1000, "memory_limit_mib": 4096,
         "runtime_s": 1}))
     if correspondence is not None:
@@ -155,7 +155,7 @@ def write_data(folder, correspondence):
 
 
 def run_make_benchmarks(data, out, plots):
-    return subprocess.run(["/usr/bin/python3", str(REPO / "scripts" / "make_benchmarks.py"), "--data", str(data),
+    return subprocess.run(["/usr/bin/python3", str(REPO / "bench" / "make_benchmarks.py"), "--data", str(data),
                            "--output", str(out), "--plots", str(plots)],
                           capture_output=True, text=True, timeout=TIMEOUT_SECONDS)
 

@@ -1,5 +1,5 @@
-"""Tests of the "Motion quality" section that scripts/make_benchmarks.py writes into
-BENCHMARKS.md from scripts/motion_quality.py's motion.json (issue 12, item 6): on a tiny
+"""Tests of the "Motion quality" section that bench/make_benchmarks.py writes into
+BENCHMARKS.md from bench/motion_quality.py's motion.json (issue 12, item 6): on a tiny
 hand-made motion.json whose numbers are known, and once through the script's command line
 with a minimal data folder. Needs only Debian's python3 with matplotlib, no build.
 """
@@ -68,7 +68,7 @@ def tiny_motion(filmstrip_files=("docs/benchmarks/steiner.svg",), methods=METHOD
                 **{m: {"pass": m in ("rigid", "barycentric"), "value": "x"} for m in methods}}]
     cli = {"rigid": "--method rigid", "barycentric": "--method barycentric", "linear": "--method linear",
            "arap": None}
-    return {"command": "/usr/bin/python3 scripts/motion_quality.py out/benchmarks/motion_corpus --json x",
+    return {"command": "/usr/bin/python3 bench/motion_quality.py out/benchmarks/motion_corpus --json x",
             "corpus": "out/benchmarks/motion_corpus", "corpus_seed": 12, "build_dir": "build-bench/release",
             "cli_version": "stickmorph 0.1.0", "frames": 30, "check_frames": "all", "methods": list(methods),
             "cli_methods": {m: cli[m] for m in methods}, "notes": [], "pairs": pairs, "summary": summary,
@@ -155,8 +155,8 @@ def test_plot_and_the_commands(tmp_path):
     plot = tmp_path / "plots" / "motion_quality.svg"
     assert plot.exists() and plot.read_text().lstrip().startswith("<?xml")
     assert "rigid" in plot.read_text()  # the legend names the methods
-    assert "/usr/bin/python3 scripts/motion_corpus.py out/benchmarks/motion_corpus --seed 12 " \
-           "--build-dir build-bench/release\n/usr/bin/python3 scripts/motion_quality.py " \
+    assert "/usr/bin/python3 bench/motion_corpus.py out/benchmarks/motion_corpus --seed 12 " \
+           "--build-dir build-bench/release\n/usr/bin/python3 bench/motion_quality.py " \
            "out/benchmarks/motion_corpus --json x" in text
     assert "the measuring took 41 s" in text
     assert "[docs/MOTION.md](docs/MOTION.md)" in text
@@ -200,7 +200,7 @@ def write_data(folder, motion):
     (folder / "morph.jsonl").write_text(json.dumps(record) + "\n")
     (folder / "polygon_pairs.json").write_text(json.dumps({"repeat": 1, "pairs": []}))
     (folder / "run.json").write_text(json.dumps({
-        "command": "bash scripts/benchmarks.sh --quick", "date": "d", "commit": "c", "machine": "m", "compiler": "c",
+        "command": "bash bench/benchmarks.sh --quick", "date": "d", "commit": "c", "machine": "m", "compiler": "c",
         "build": "b", "frames": 5, "aronov_max": 300, "sg2001_max": 1000, "memory_limit_mib": 4096,
         "runtime_s": 1}))
     if motion is not None:
@@ -208,7 +208,7 @@ def write_data(folder, motion):
 
 
 def run_make_benchmarks(data, out, plots):
-    return subprocess.run(["/usr/bin/python3", str(REPO / "scripts" / "make_benchmarks.py"), "--data", str(data),
+    return subprocess.run(["/usr/bin/python3", str(REPO / "bench" / "make_benchmarks.py"), "--data", str(data),
                            "--output", str(out), "--plots", str(plots)],
                           capture_output=True, text=True, timeout=TIMEOUT_SECONDS)
 

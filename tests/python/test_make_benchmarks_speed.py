@@ -1,4 +1,4 @@
-"""Tests of issue 15's parts of BENCHMARKS.md that scripts/make_benchmarks.py writes: the
+"""Tests of issue 15's parts of BENCHMARKS.md that bench/make_benchmarks.py writes: the
 frame against a fresh LU, the scrubbing table from scrub.jsonl and the total's growth
 exponent over n = 100 to 1000, on tiny hand-made records whose numbers are known. Needs only
 Debian's python3 with matplotlib, no build.

@@ -1,4 +1,4 @@
-"""Tests of scripts/motion_quality.py (issue 12's measuring instrument) and of the corpus
+"""Tests of bench/motion_quality.py (issue 12's measuring instrument) and of the corpus
 generator: the metric functions on hand-made frames whose answers are known, and one run
 of both scripts through the CLI on tiny pairs.
 
@@ -225,7 +225,7 @@ def test_end_to_end_on_two_tiny_pairs(cli, tmp_path):
     # a figure into itself turned by 180 degrees, tagged as such by its name
     write_pair(corpus, "tree_self_turn_180", TREE, rotate(TREE, 180), TREE_EDGES)
     out_json = tmp_path / "quality.json"
-    r = subprocess.run([sys.executable, str(REPO / "scripts" / "motion_quality.py"), str(corpus),
+    r = subprocess.run([sys.executable, str(REPO / "bench" / "motion_quality.py"), str(corpus),
                         "--build-dir", str(cli.parent), "--frames", "12", "--weights", "mvc,uniform",
                         "--json", str(out_json), "--filmstrip", str(tmp_path / "strips")],
                        capture_output=True, text=True, timeout=TIMEOUT_SECONDS)
@@ -256,14 +256,14 @@ def test_ours_args_are_passed_through(cli, tmp_path):
     corpus.mkdir()
     write_pair(corpus, "square", SQUARE, rotate(SQUARE, 40) * 1.2, SQUARE_EDGES)
     out_json = tmp_path / "q.json"
-    r = subprocess.run([sys.executable, str(REPO / "scripts" / "motion_quality.py"), str(corpus),
+    r = subprocess.run([sys.executable, str(REPO / "bench" / "motion_quality.py"), str(corpus),
                         "--build-dir", str(cli.parent), "--frames", "5", "--methods", "ours",
                         "--ours-args", "--weights floater --enclosure-sides 3", "--json", str(out_json)],
                        capture_output=True, text=True, timeout=TIMEOUT_SECONDS)
     assert r.returncode == 0, r.stderr
     assert json.loads(out_json.read_text())["methods"] == ["ours"]
     # an option the CLI refuses reaches it and fails that morph, reported per pair
-    r = subprocess.run([sys.executable, str(REPO / "scripts" / "motion_quality.py"), str(corpus),
+    r = subprocess.run([sys.executable, str(REPO / "bench" / "motion_quality.py"), str(corpus),
                         "--build-dir", str(cli.parent), "--frames", "5", "--methods", "ours",
                         "--ours-args", "--motion nonsense", "--json", str(out_json)],
                        capture_output=True, text=True, timeout=TIMEOUT_SECONDS)
@@ -273,7 +273,7 @@ def test_ours_args_are_passed_through(cli, tmp_path):
 
 
 def test_corpus_pairs_are_compatible_and_deterministic(cli, tmp_path):
-    args = [sys.executable, str(REPO / "scripts" / "motion_corpus.py"), "--build-dir", str(cli.parent)]
+    args = [sys.executable, str(REPO / "bench" / "motion_corpus.py"), "--build-dir", str(cli.parent)]
     for folder in ("a", "b"):
         r = subprocess.run(args + [str(tmp_path / folder)], capture_output=True, text=True, timeout=TIMEOUT_SECONDS)
         assert r.returncode == 0, r.stderr
@@ -305,7 +305,7 @@ def test_corpus_pairs_are_compatible_and_deterministic(cli, tmp_path):
 # several CLI variants in one run (--cli-method), cost per frame, filmstrips with rows
 
 def _run_quality(corpus, cli, *args):
-    return subprocess.run([sys.executable, str(REPO / "scripts" / "motion_quality.py"), str(corpus),
+    return subprocess.run([sys.executable, str(REPO / "bench" / "motion_quality.py"), str(corpus),
                            "--build-dir", str(cli.parent)] + list(args),
                           capture_output=True, text=True, timeout=TIMEOUT_SECONDS)
 

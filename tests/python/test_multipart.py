@@ -1,6 +1,6 @@
 """Figures of several parts (connected components; an isolated vertex is one), through the CLI
-and the module, every frame checked by scripts/multipart_check.py, and tests of that checker
-and of scripts/multipart_corpus.py themselves.
+and the module, every frame checked by bench/multipart_check.py, and tests of that checker
+and of bench/multipart_corpus.py themselves.
 
 The contract (docs/FORMAT.md, "Components"): besides the conditions on each part, a pair is
 compatible when every part lies in the same face of every other part in both figures; `check`
@@ -158,12 +158,12 @@ def test_correspond_auto_matches_the_parts_of_a_redrawn_pair(cli, tmp_path):
 
 
 def test_a_small_corpus_run(cli, tmp_path):
-    made = subprocess.run([sys.executable, str(REPO / "scripts" / "multipart_corpus.py"), str(tmp_path / "c"),
+    made = subprocess.run([sys.executable, str(REPO / "bench" / "multipart_corpus.py"), str(tmp_path / "c"),
                            "--seed", "3", "--per-kind", "2"], capture_output=True, text=True, timeout=120)
     assert made.returncode == 0, made.stderr
     manifest = json.loads((tmp_path / "c" / "manifest.json").read_text())
     assert sorted({e["kind"] for e in manifest}) == sorted(mc.KINDS) and len(manifest) == 6
-    checked = subprocess.run([sys.executable, str(REPO / "scripts" / "multipart_check.py"), str(tmp_path / "c"),
+    checked = subprocess.run([sys.executable, str(REPO / "bench" / "multipart_check.py"), str(tmp_path / "c"),
                               "--stickmorph", str(cli), "--frames", "8"], capture_output=True, text=True,
                              timeout=300)
     assert checked.returncode == 0, checked.stdout + checked.stderr

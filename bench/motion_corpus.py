@@ -6,7 +6,7 @@ Issue 12 ("Natural motion with the guarantee kept") asks to measure first: befor
 This script writes that set as FORMAT.md figure files, NAME.source.json / NAME.target.json,
 plus manifest.json (kind, size and special tags of every pair) into a folder:
 
-    /usr/bin/python3 scripts/motion_corpus.py [OUT_DIR] [--seed N] [--build-dir build]
+    /usr/bin/python3 bench/motion_corpus.py [OUT_DIR] [--seed N] [--build-dir build]
 
 Kinds (see docs/MOTION.md):
   glyph       hand-written stroke letters (trees and graphs with junctions) into a deformed

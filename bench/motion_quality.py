@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
 """Measure how natural a morph looks, on every pair of a corpus folder (issue 12).
 
-    /usr/bin/python3 scripts/motion_quality.py out/motion_corpus --build-dir build \
+    /usr/bin/python3 bench/motion_quality.py out/motion_corpus --build-dir build \
         [--frames 30] [--ours-args "--weights uniform"] [--json FILE] [--filmstrip DIR]
-    /usr/bin/python3 scripts/motion_quality.py out/motion_corpus --build-dir build \
+    /usr/bin/python3 bench/motion_quality.py out/motion_corpus --build-dir build \
         --cli-method rigid="--method rigid" --cli-method barycentric="--method barycentric"
 
-For every pair (NAME.source.json / NAME.target.json, as scripts/motion_corpus.py writes
+For every pair (NAME.source.json / NAME.target.json, as bench/motion_corpus.py writes
 them) it runs `stickmorph morph` (our morph, the CLI's default method, once per --weights
 kind, with --ours-args passed through; or, with --cli-method LABEL=ARGS, once per such
 labelled variant), `stickmorph morph --method linear` (straight lines) and an
@@ -616,7 +616,7 @@ def main(argv=None):
     corpus = corpus_pairs(folder)
     if not corpus:
         sys.exit(f"error: no NAME.source.json / NAME.target.json pairs in {folder} "
-                 "(make them with scripts/motion_corpus.py)")
+                 "(make them with bench/motion_corpus.py)")
     if args.methods is None:
         args.methods = "linear,arap" if args.cli_method else "ours,linear,arap"
     families = [f.strip() for f in args.methods.split(",") if f.strip()]
@@ -784,7 +784,7 @@ def main(argv=None):
             version = subprocess.run([str(cli), "--version"], capture_output=True, text=True,
                                      timeout=TIMEOUT_SECONDS).stdout.strip()
             skip = {"name", "kind", "vertices", "edges", "attempts"}
-            doc = {"command": "/usr/bin/python3 scripts/motion_quality.py " + shlex.join(argv),
+            doc = {"command": "/usr/bin/python3 bench/motion_quality.py " + shlex.join(argv),
                    "corpus": str(folder), "corpus_seed": seed, "build_dir": str(args.build_dir),
                    "cli_version": version, "frames": args.frames, "ours_args": args.ours_args,
                    "check_frames": args.check_frames, "methods": labels,

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Write a corpus of multi-part figure pairs for `stickmorph check` / `morph`.
 
-    /usr/bin/python3 scripts/multipart_corpus.py OUT_DIR [--seed S] [--per-kind K] [--max-vertices N]
+    /usr/bin/python3 bench/multipart_corpus.py OUT_DIR [--seed S] [--per-kind K] [--max-vertices N]
 
 A *part* is a connected component of a figure (an isolated vertex is one). Every figure here
 has several, some nested: the counter of an O inside the O, ring in ring, a dot in a face.
@@ -11,7 +11,7 @@ The pairs are of three kinds (manifest field `kind`):
                    orientation-preserving warp (bend, wave, twist about a point, bulge,
                    shear, stretch) then a rotation of up to 120 degrees, a scale and a shift.
                    The warp is a diffeomorphism of the plane, but the edges stay straight, so
-                   every target is checked exactly (scripts/multipart_check.py): a valid plane
+                   every target is checked exactly (bench/multipart_check.py): a valid plane
                    figure, every vertex with the source's order of neighbours, every part with
                    its outer face, every part in the same face of every other part, and every
                    vertex at least 0.2% of the size away from edges not ending there. A warp
@@ -28,7 +28,7 @@ The pairs are of three kinds (manifest field `kind`):
 
 The shapes: outlines of glyphs with several contours (i j ! ? = % ; : " e-acute o-umlaut
 a-umlaut A-umlaut O o 0 8 B D P Q R A a e g 6 9 @ &) from the DejaVu and STIX fonts that
-matplotlib bundles (read and flattened by scripts/correspondence_corpus.py), and centre-line
+matplotlib bundles (read and flattened by bench/correspondence_corpus.py), and centre-line
 drawings: a dotted i and j (the dot an isolated vertex or a tiny polygon), a face (head, two eye
 rings with pupils, a mouth polyline, a nose vertex), a target of three concentric rings, rings
 three deep with a spiral polyline inside, a bullseye with an isolated centre, a house with a

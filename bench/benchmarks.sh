@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates BENCHMARKS.md and its plots (docs/benchmarks/*.svg) in one run.
 #
-#   bash scripts/benchmarks.sh [--quick] [--working-tree]
+#   bash bench/benchmarks.sh [--quick] [--working-tree]
 #
 # Measures exactly the committed HEAD: a detached git worktree of it in
 # build-bench/source (git rewrites only the files that changed, so rebuilds
@@ -22,13 +22,13 @@
 #                       family, and at 10^5 (polyline and triangulation) with
 #                       fewer frames, barycentric only (scrub.md,
 #                       scrub_large.md: their tables)
-#   motion_corpus/      scripts/motion_corpus.py: the motion-quality corpus
-#   motion.json         scripts/motion_quality.py on it (issue 12, docs/MOTION.md):
+#   motion_corpus/      bench/motion_corpus.py: the motion-quality corpus
+#   motion.json         bench/motion_quality.py on it (issue 12, docs/MOTION.md):
 #                       rigid (if `stickmorph morph --help` lists it),
 #                       barycentric, linear and arap; filmstrips of the worst
 #                       pairs go to docs/benchmarks/motion/
 #   run.json            machine, date, commit, command, runtime
-# and then scripts/make_benchmarks.py (Debian's /usr/bin/python3 with
+# and then bench/make_benchmarks.py (Debian's /usr/bin/python3 with
 # python3-matplotlib) writes BENCHMARKS.md and the SVG plots from those files.
 # --quick runs sizes 10 to 300 only (the scrubbing benchmark at 1000 with 60
 # frames), to try the pipeline in a minute; the report gives the command it
@@ -37,7 +37,7 @@ set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 start=$(date +%s)
-command="bash scripts/benchmarks.sh"
+command="bash bench/benchmarks.sh"
 sizes=10,30,100,300,1000,3000,10000
 scrub_sizes=1000,10000
 scrub_frames=240
@@ -52,7 +52,7 @@ for argument in "$@"; do
   case "$argument" in
     --quick) sizes=10,30,100,300; scrub_sizes=1000; scrub_frames=60; scrub_large= ;;
     --working-tree) working_tree=1 ;;
-    *) echo "usage: bash scripts/benchmarks.sh [--quick] [--working-tree]" >&2; exit 2 ;;
+    *) echo "usage: bash bench/benchmarks.sh [--quick] [--working-tree]" >&2; exit 2 ;;
   esac
   command+=" $argument"
 done
@@ -136,7 +136,7 @@ echo "==== correspondence (issue 13: stickmorph_benchmark_correspondence, sizes 
   --json "$data/correspondence.json" > "$data/correspondence.md"
 tail -1 "$data/correspondence.md"  # whether the 1000-vertex pairs match in under a second
 
-echo "==== motion quality (issue 12: scripts/motion_corpus.py, scripts/motion_quality.py) ===="
+echo "==== motion quality (issue 12: bench/motion_corpus.py, bench/motion_quality.py) ===="
 # The rigid method is measured once the CLI has it: `stickmorph morph --help`
 # lists it under --method (or, if the help has no --method entry, anywhere).
 morph_help=$("$build/stickmorph" morph --help 2>&1 || true)
@@ -150,9 +150,9 @@ else
   motion_methods+=(--note "no rigid row: \`stickmorph morph --help\` at $commit lists no rigid method"
                    --filmstrip-method barycentric --filmstrip-rows barycentric)
 fi
-/usr/bin/python3 scripts/motion_corpus.py "$data/motion_corpus" --build-dir "$build" > "$data/motion_corpus.log"
+/usr/bin/python3 bench/motion_corpus.py "$data/motion_corpus" --build-dir "$build" > "$data/motion_corpus.log"
 tail -1 "$data/motion_corpus.log"
-/usr/bin/python3 scripts/motion_quality.py "$data/motion_corpus" --build-dir "$build" \
+/usr/bin/python3 bench/motion_quality.py "$data/motion_corpus" --build-dir "$build" \
   "${motion_methods[@]}" --cli-method "barycentric=--method barycentric" \
   --filmstrip docs/benchmarks/motion --filmstrip-worst 1 --filmstrip-pairs special_self_turn_180 \
   --json "$data/motion.json" > "$data/motion.md" 2> "$data/motion.log" \
@@ -185,5 +185,5 @@ json.dump({"command": e["BENCH_COMMAND"], "date": e["BENCH_DATE"], "commit": e["
 ' "$data/run.json"
 
 echo "==== report ===="
-/usr/bin/python3 scripts/make_benchmarks.py --data "$data" --output BENCHMARKS.md --plots docs/benchmarks
+/usr/bin/python3 bench/make_benchmarks.py --data "$data" --output BENCHMARKS.md --plots docs/benchmarks
 echo "benchmarks: done in $(( $(date +%s) - start )) s"

@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 """Check `stickmorph morph --correspond auto` on a corpus, with geometry of its own.
 
-    /usr/bin/python3 scripts/correspondence_check.py CORPUS_DIR --stickmorph build/stickmorph \
+    /usr/bin/python3 bench/correspondence_check.py CORPUS_DIR --stickmorph build/stickmorph \
         [--frames N] [--timeout S] [--json REPORT] [--keep DIR] [--max-full-edges E]
 
-CORPUS_DIR holds manifest.json and the figure files that scripts/correspondence_corpus.py
+CORPUS_DIR holds manifest.json and the figure files that bench/correspondence_corpus.py
 writes. For every pair the CLI is run as
 
     stickmorph morph SOURCE TARGET -o OUT --correspond auto --frames N [--pin S:T ...]

@@ -1,14 +1,14 @@
 #!/usr/bin/env python3
 """Write a corpus of figure pairs for `stickmorph morph --correspond auto`.
 
-    /usr/bin/python3 scripts/correspondence_corpus.py OUT_DIR [--seed N] [--count-per-family K]
+    /usr/bin/python3 bench/correspondence_corpus.py OUT_DIR [--seed N] [--count-per-family K]
 
 With `--correspond auto` the engine is given two figure files that do not correspond by
 index: they may have different numbers of vertices, other numbering, another edge order and
 direction, and strokes subdivided differently. It has to find the match itself (adding dummy
 vertices where one figure has a vertex the other has not) or refuse the pair with exit 2 and
 one `error: ` line when no match exists. The pairs here are drawn the way such files arise in
-practice, so neither the engine nor scripts/correspondence_check.py can lean on an accident of
+practice, so neither the engine nor bench/correspondence_check.py can lean on an accident of
 construction. Families (K pairs each, default 12, so 60 pairs):
 
   font      the outline of one single-contour glyph (C E F ... z 1 2 3 5 7) in two different

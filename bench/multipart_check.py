@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 """Check `stickmorph` on figures of several parts, with exact geometry of its own.
 
-    /usr/bin/python3 scripts/multipart_check.py CORPUS_DIR --stickmorph build/stickmorph \
+    /usr/bin/python3 bench/multipart_check.py CORPUS_DIR --stickmorph build/stickmorph \
         [--frames N] [--method M] [--timeout S] [--json REPORT] [--keep DIR] [--only NAME ...]
 
-CORPUS_DIR holds manifest.json and the figure files that scripts/multipart_corpus.py writes.
+CORPUS_DIR holds manifest.json and the figure files that bench/multipart_corpus.py writes.
 A *part* of a figure is one of its connected components (an isolated vertex is a part of its
 own); parts are numbered 0, 1, 2, ... in the order of their smallest vertex index. The contract
 (docs/FORMAT.md, "Components"): a pair of such figures is compatible when every part is
@@ -28,7 +28,7 @@ For each pair of the manifest, by its `kind`:
                    `morph --correspond auto`, the frames being the matched figure's: frames[0] is
                    a subdivision of the source drawing (every matched vertex a source vertex, bit
                    for bit, or a dummy on a source edge, each source edge one chain of matched
-                   edges; the test of scripts/correspondence_check.py), the last frame one of the
+                   edges; the test of bench/correspondence_check.py), the last frame one of the
                    target drawing, every matched part made of exactly one source part and one
                    target part, and every frame valid as above against frames[0].
   nesting_changes  a part lies in another face in the target: `check` exits 1 with one stdout

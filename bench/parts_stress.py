@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
 """Stress `stickmorph morph` with large, harsh figures of several parts, checked exactly.
 
-    /usr/bin/python3 scripts/parts_stress.py [--stickmorph build/stickmorph] [--seed S] [--count N]
+    /usr/bin/python3 bench/parts_stress.py [--stickmorph build/stickmorph] [--seed S] [--count N]
         [--max-vertices V] [--min-vertices V] [--frames F] [--offset D] [--methods rigid,barycentric]
         [--timeout S] [--keep DIR] [--json REPORT]
 
-Much harsher than scripts/multipart_corpus.py. Each pair is a random scene of *clusters*: rings
+Much harsher than bench/multipart_corpus.py. Each pair is a random scene of *clusters*: rings
 (polygons inscribed in circles, some star-shaped, some squares with exactly collinear vertices on
 their sides) nested 2-5 deep around one centre with gaps of 1-5% of the radius; in every annulus
 bands of dots (lone vertices), arc strokes, radial strokes of collinear vertices and tiny
@@ -20,7 +20,7 @@ The target turns every ring, band and satellite independently about its cluster'
 to +-180 degrees (some by exact quarter turns, which keep collinear vertices collinear), turns
 every cluster as a whole, and turns, scales and moves the whole figure. Every turned piece stays
 in its annulus, so the target keeps every vertex's order of neighbours, every part's outer face
-and the nesting; that is checked anyway, exactly, with scripts/multipart_check.py's functions
+and the nesting; that is checked anyway, exactly, with bench/multipart_check.py's functions
 (a target that fails is regenerated, and reported if it keeps failing).
 
 For each pair and each method (`--methods`, default the rigid default and barycentric) the

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Time the whole morph on drawn-looking figures of 10^3 to 10^5 vertices (issue 15).
 
-    /usr/bin/python3 scripts/speed_corpus.py [--build DIR] [--sizes 1000,10000] [--shapes LIST]
+    /usr/bin/python3 bench/speed_corpus.py [--build DIR] [--sizes 1000,10000] [--shapes LIST]
                                              [--frames N] [--playback K] [--seed S] [--json FILE]
 
 The benchmark families (native/bench/bench_figures.h) are regular on purpose; these are drawn by
@@ -146,7 +146,7 @@ def signed_area(xy):
 
 
 def outline(n, rng):
-    sys.path.insert(0, str(REPO / "scripts"))
+    sys.path.insert(0, str(REPO / "bench"))
     import correspondence_corpus as outlines  # the font outlines of the correspondence corpus
     contours, _ = outlines.glyph_contours("DejaVuSans.ttf", "S")
     dense = []

@@ -1,0 +1,13 @@
+"""The writer of BENCHMARKS.md, one module per part of the report (bench/make_benchmarks.py
+is the command; bench/README.md lists the modules):
+
+  common.py          matplotlib set-up, constants, reading morph.jsonl / polygon_pairs.json /
+                     run.json / scrub.jsonl, the cells, number formats, Markdown tables, log-log plots
+  writer.py          write_report: the header, headline, corpus, peak memory and straight-line morph,
+                     and the order of the sections
+  steiner.py         Steiner vertices per method and the polygon-pair corpus
+  stages.py          time per stage, fitted growth exponents, where the time goes, per-frame plots
+  speed.py           issue 15: a frame against a fresh LU, scrubbing, the total's growth
+  motion.py          motion quality (issue 12) from motion.json
+  correspondence.py  correspondence against size (issue 13) from correspondence.json
+"""

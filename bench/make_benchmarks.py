@@ -1,0 +1,61 @@
+#!/usr/bin/python3
+"""Writes BENCHMARKS.md and its SVG plots from the raw benchmark output.
+
+Input (written by bench/benchmarks.sh under out/benchmarks/):
+  morph.jsonl         stickmorph_benchmark_morph --json: one object per (case, method)
+  polygon_pairs.json  stickmorph_benchmark --json: the polygon-pair corpus
+  run.json            machine, date, commit, command and runtime of the run
+  motion.json         bench/motion_quality.py --json on the motion corpus
+                      (optional: without it the report says that motion
+                      quality was not measured)
+  correspondence.json stickmorph_benchmark_correspondence --json: automatic
+                      correspondence against size (optional, likewise)
+  scrub.jsonl         stickmorph_benchmark_scrub --json: frames per second of
+                      the stateful solvers (issue 15; optional, likewise)
+
+Output: BENCHMARKS.md and docs/benchmarks/*.svg. Every number in them comes
+from the input files; the text around them only explains. Runs with Debian's
+/usr/bin/python3; the plots are drawn with matplotlib (Debian
+python3-matplotlib).
+"""
+
+import argparse
+import os
+import sys
+
+# The report's sections live in bench/benchmarks_md/, one module each (its __init__.py lists them);
+# the names below are re-exported for tests/python/test_make_benchmarks_*.py.
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from benchmarks_md.common import (STAGES, Cell, InputError, fit_exponent, index_cells,  # noqa: E402,F401
+                                  read_inputs, read_scrub)
+from benchmarks_md.correspondence import (correspondence_requirement, correspondence_section,  # noqa: E402,F401
+                                          read_correspondence)
+from benchmarks_md.motion import motion_section, read_motion  # noqa: E402,F401
+from benchmarks_md.speed import frame_cost_section, scrub_section, speed_headline, total_exponent  # noqa: E402,F401
+from benchmarks_md.writer import write_report  # noqa: E402
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--data", default="out/benchmarks", help="directory of the raw output")
+    parser.add_argument("--output", default="BENCHMARKS.md")
+    parser.add_argument("--plots", default="docs/benchmarks", help="directory for the SVG plots")
+    args = parser.parse_args()
+    try:
+        records, polygon_pairs, run = read_inputs(args.data)
+        if not records:
+            raise InputError(f"{args.data}/morph.jsonl holds no results")
+        motion = read_motion(args.data)
+        correspondence = read_correspondence(args.data)
+        scrub = read_scrub(args.data)
+        write_report(records, polygon_pairs, run, args.output, args.plots, motion, correspondence, scrub)
+    except (InputError, KeyError) as error:
+        print(f"error: make_benchmarks: incomplete benchmark data: {error}", file=sys.stderr)
+        return 2
+    print(f"wrote {args.output} and {args.plots}/*.svg")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
