@@ -1,5 +1,7 @@
 #include "stickmorph/compatibility.h"
 
+#include "stickmorph/internal/stage_counters.h"
+
 #include <algorithm>
 #include <set>
 #include <utility>
@@ -91,6 +93,7 @@ std::set<DirectedEdge> undirected_set(const StickFigure& figure) {
 
 CompatibilityReport check_compatibility(const StickFigure& source, const Decomposition& source_dec,
                                         const StickFigure& target, const Decomposition& target_dec) {
+  internal::stage_counters().compatibility_checks.fetch_add(1, std::memory_order_relaxed);
   const std::size_t n = source.vertices.size();
   if (n != target.vertices.size())
     return incompatible(Incompatibility::VertexCountDiffers,
@@ -228,8 +231,44 @@ CompatibilityReport check_compatibility(const StickFigure& source, const StickFi
 }
 
 void require_compatible(const StickFigure& source, const StickFigure& target) {
-  const CompatibilityReport report = check_compatibility(source, target);
-  if (!report.compatible()) throw IncompatibleFiguresError(report.kind, "incompatible figures: " + report.reason, report.vertices);
+  CompatiblePair::check(source, target);
 }
+
+CompatiblePair CompatiblePair::check(StickFigure source, StickFigure target) {
+  Decomposition source_dec = decompose(source);
+  Decomposition target_dec = decompose(target);
+  return check(std::move(source), std::move(source_dec), std::move(target), std::move(target_dec));
+}
+
+CompatiblePair CompatiblePair::check(StickFigure source, Decomposition source_dec, StickFigure target,
+                                     Decomposition target_dec) {
+  CompatibilityReport report;
+  std::optional<CompatiblePair> pair =
+      try_check(std::move(source), std::move(source_dec), std::move(target), std::move(target_dec), report);
+  if (!pair) throw IncompatibleFiguresError(report.kind, "incompatible figures: " + report.reason, report.vertices);
+  return std::move(*pair);
+}
+
+std::optional<CompatiblePair> CompatiblePair::try_check(StickFigure source, Decomposition source_dec,
+                                                        StickFigure target, Decomposition target_dec,
+                                                        CompatibilityReport& report) {
+  report = check_compatibility(source, source_dec, target, target_dec);
+  if (!report.compatible()) return std::nullopt;
+  CompatiblePair pair;
+  pair.source_ = std::move(source);
+  pair.target_ = std::move(target);
+  pair.source_dec_ = std::move(source_dec);
+  pair.target_dec_ = std::move(target_dec);
+  return pair;
+}
+
+namespace internal {
+
+StageCounters& stage_counters() {
+  static StageCounters counters;
+  return counters;
+}
+
+}  // namespace internal
 
 }  // namespace stickmorph

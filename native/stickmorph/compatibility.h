@@ -12,6 +12,7 @@
 // of every other part in both figures (NestingDiffers otherwise).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,5 +54,40 @@ CompatibilityReport check_compatibility(const StickFigure& source, const Decompo
 
 /// Throws IncompatibleFiguresError with the report's reason unless compatible.
 void require_compatible(const StickFigure& source, const StickFigure& target);
+
+/// A pair of stick figures proven compatible (section 2.1), holding the
+/// decompositions (Algorithm 1) that proved it. It is what the stages after
+/// the boundary take (triangulate_figures, the morphs): made once per morph,
+/// it carries the proof, so that no later stage decomposes or checks the
+/// pair again and none can be handed an unchecked one. Only `check` makes
+/// one from figures; scaled_pair (working_scale.h) makes the same pair
+/// multiplied by a power of two, exactly, which keeps the proof.
+class CompatiblePair {
+ public:
+  /// Decomposes both figures and checks them.
+  /// @throws IncompatibleFiguresError naming the vertices, as check_compatibility says.
+  static CompatiblePair check(StickFigure source, StickFigure target);
+  /// The same with decompositions already made of these figures.
+  static CompatiblePair check(StickFigure source, Decomposition source_dec, StickFigure target,
+                              Decomposition target_dec);
+  /// The same for a caller that words the refusal itself (the
+  /// correspondence, whose pair is compatible by construction): nothing and
+  /// `report` says why, or the pair.
+  static std::optional<CompatiblePair> try_check(StickFigure source, Decomposition source_dec, StickFigure target,
+                                                 Decomposition target_dec, CompatibilityReport& report);
+
+  const StickFigure& source() const { return source_; }
+  const StickFigure& target() const { return target_; }
+  const Decomposition& source_decomposition() const { return source_dec_; }
+  const Decomposition& target_decomposition() const { return target_dec_; }
+  /// The number of parts (figure_parts.h), the same in both.
+  int parts() const { return int(source_dec_.exterior_of_part.size()); }
+
+ private:
+  CompatiblePair() = default;
+  friend CompatiblePair scaled_pair(const CompatiblePair& pair, int exponent);
+  StickFigure source_, target_;
+  Decomposition source_dec_, target_dec_;
+};
 
 }  // namespace stickmorph

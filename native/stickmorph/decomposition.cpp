@@ -7,6 +7,7 @@
 #include "stickmorph/exact_predicates.h"
 #include "stickmorph/figure_parts.h"
 #include "stickmorph/internal/geometry.h"
+#include "stickmorph/internal/stage_counters.h"
 
 namespace stickmorph {
 namespace {
@@ -93,6 +94,7 @@ RotationSystem rotation_system(const StickFigure& figure) {
 }
 
 Decomposition decompose(const StickFigure& figure) {
+  internal::stage_counters().decompositions.fetch_add(1, std::memory_order_relaxed);
   Decomposition dec;
   dec.rotation = rotation_system(figure);
   const int darts = 2 * int(figure.edges.size());

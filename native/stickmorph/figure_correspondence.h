@@ -37,9 +37,11 @@
 // target drawing; it is compatible by construction, and is checked to be.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "stickmorph/compatibility.h"
 #include "stickmorph/stick_figure.h"
 
 namespace stickmorph {
@@ -90,6 +92,9 @@ struct FigureCorrespondence {
   double residual = 0;         ///< the winner's similarity residual in [0, 1]; 0 is a perfect fit
   double rotation_degrees = 0; ///< the winner's best-fit rotation, counter-clockwise
   double milliseconds = 0;     ///< wall-clock time of the match
+  /// source and target as checked at the end of the match (section 2.1):
+  /// morph_stick_figures morphs this pair rather than checking it again.
+  std::optional<CompatiblePair> pair;
 };
 
 /// What the matching must respect.

@@ -62,19 +62,15 @@ using internal::ms_since;
 namespace {
 
 // Algorithm 3, steps 1-3, at the scale the figures are given in.
-FigureTriangulation triangulate_at_scale(const StickFigure& source, const StickFigure& target,
-                                         const FigureTriangulationOptions& options, FigureTriangulationStats* stats) {
-  // The interfaces check it first (morph_stick_figures, the CLI, the
-  // module); this is the same check for direct callers, in the same words.
-  check_enclosure_sides(options.enclosure_sides, OptionSpelling::Keyword);
+FigureTriangulation triangulate_at_scale(const CompatiblePair& pair, const FigureTriangulationOptions& options,
+                                         FigureTriangulationStats* stats) {
+  // Algorithm 3, step 1 is the pair's: decomposed and checked once.
+  const StickFigure& source = pair.source();
+  const StickFigure& target = pair.target();
+  const Decomposition& source_dec = pair.source_decomposition();
+  const Decomposition& target_dec = pair.target_decomposition();
   FigureTriangulationStats measured;
   auto stage_start = Clock::now();
-  // Algorithm 3, step 1.
-  const Decomposition source_dec = decompose(source);
-  const Decomposition target_dec = decompose(target);
-  const CompatibilityReport report = check_compatibility(source, source_dec, target, target_dec);
-  if (!report.compatible()) throw IncompatibleFiguresError(report.kind, "incompatible figures: " + report.reason, report.vertices);
-  measured.decompose_ms = ms_since(stage_start);
 
   // Issue 14: a figure of several parts is bridged into one (part_bridges.h)
   // and triangulated as such; the bridges' bends then become Steiner
@@ -83,7 +79,7 @@ FigureTriangulation triangulate_at_scale(const StickFigure& source, const StickF
     stage_start = Clock::now();
     const internal::BridgedFigures bridged = internal::bridge_parts(source, source_dec, target);
     const double bridge_ms = ms_since(stage_start);
-    FigureTriangulation joined = triangulate_at_scale(bridged.source, bridged.target, options, stats);
+    FigureTriangulation joined = triangulate_at_scale(*bridged.pair, options, stats);
     const int n = int(source.vertices.size()), bends = bridged.bends, k = joined.enclosure_vertices;
     // Node order of the bridged triangulation: n figure vertices, the bends,
     // the enclosure, the Steiner vertices. Wanted: the figure, the
@@ -239,19 +235,32 @@ FigureTriangulation triangulate_at_scale(const StickFigure& source, const StickF
 
 }  // namespace
 
-FigureTriangulation triangulate_figures(const StickFigure& source, const StickFigure& target,
-                                        const FigureTriangulationOptions& options, FigureTriangulationStats* stats) {
+FigureTriangulation triangulate_figures(const CompatiblePair& pair, const FigureTriangulationOptions& options,
+                                        FigureTriangulationStats* stats) {
+  // The interfaces check it first (morph_stick_figures, the CLI, the
+  // module); this is the same check for direct callers, in the same words.
+  check_enclosure_sides(options.enclosure_sides, OptionSpelling::Keyword);
   // In the working scale (working_scale.h): a pair beyond the numeric
   // stages' comfortable magnitudes is triangulated multiplied by an exact
   // power of two (the same plane graphs), and the nodes multiplied back.
-  const int exponent = working_scale_exponent(source, target);
-  if (exponent == 0) return triangulate_at_scale(source, target, options, stats);
+  const int exponent = working_scale_exponent(pair.source(), pair.target());
+  if (exponent == 0) return triangulate_at_scale(pair, options, stats);
   FigureTriangulationOptions scaled_options = options;
   // Only to be enclosed: rounding of these near 0 is harmless.
   scale_points(scaled_options.enclosed_points, exponent);
-  FigureTriangulation triangulation = triangulate_at_scale(scaled_figure(source, exponent),
-                                                           scaled_figure(target, exponent), scaled_options, stats);
-  scale_triangulation_back(triangulation, source, exponent);
+  FigureTriangulation triangulation = triangulate_at_scale(scaled_pair(pair, exponent), scaled_options, stats);
+  scale_triangulation_back(triangulation, pair.source(), exponent);
+  return triangulation;
+}
+
+FigureTriangulation triangulate_figures(const StickFigure& source, const StickFigure& target,
+                                        const FigureTriangulationOptions& options, FigureTriangulationStats* stats) {
+  check_enclosure_sides(options.enclosure_sides, OptionSpelling::Keyword);
+  const auto start = Clock::now();
+  const CompatiblePair pair = CompatiblePair::check(source, target);
+  const double decompose_ms = ms_since(start);
+  FigureTriangulation triangulation = triangulate_figures(pair, options, stats);
+  if (stats) stats->decompose_ms = decompose_ms;
   return triangulation;
 }
 

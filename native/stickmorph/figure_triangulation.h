@@ -16,6 +16,7 @@
 #include <array>
 #include <vector>
 
+#include "stickmorph/compatibility.h"
 #include "stickmorph/compatible_triangulation.h"
 #include "stickmorph/stick_figure.h"
 
@@ -75,6 +76,12 @@ struct FigureTriangulationStats {
 ///         below 3), VerificationError naming the face.
 FigureTriangulation triangulate_figures(const StickFigure& source, const StickFigure& target,
                                         const FigureTriangulationOptions& options = {},
+                                        FigureTriangulationStats* stats = nullptr);
+
+/// Steps 2-3 for a pair already checked (step 1 is the pair's, made once):
+/// what the morphs call.
+/// @throws InvalidArgumentError (enclosure_sides below 3), VerificationError naming the face.
+FigureTriangulation triangulate_figures(const CompatiblePair& pair, const FigureTriangulationOptions& options,
                                         FigureTriangulationStats* stats = nullptr);
 
 /// Exact check of a FigureTriangulation against the source figure's edges:

@@ -98,9 +98,11 @@ class GuidedMorph {
   ///         positive with a convex enclosure (rounding of a nearly flat
   ///         triangle).
   /// `guide` the figure's as-rigid-as-possible trajectory in output space.
+  /// `source_decomposition` is decompose(source), which the caller has
+  /// from its CompatiblePair: the per-frame check compares against it.
   GuidedMorph(const FigureTriangulation& normalised, const StickFigure& source,
-              const std::vector<Vec2>& target_vertices, const SimilarityMotion& similarity, RigidGuide guide,
-              WeightKind kind, Easing easing);
+              const Decomposition& source_decomposition, const std::vector<Vec2>& target_vertices,
+              const SimilarityMotion& similarity, RigidGuide guide, WeightKind kind, Easing easing);
   ~GuidedMorph();
   GuidedMorph(GuidedMorph&&) noexcept;
   GuidedMorph& operator=(GuidedMorph&&) noexcept;

@@ -184,6 +184,11 @@ CheckedFrame checked_morph_frame(MorphSolver& solver, const FigureTriangulation&
 
 MorphResult morph_triangulation(const FigureTriangulation& triangulation, const StickFigure& source,
                                 const MorphOptions& options) {
+  return morph_triangulation(triangulation, source, decompose(source), options);
+}
+
+MorphResult morph_triangulation(const FigureTriangulation& triangulation, const StickFigure& source,
+                                const Decomposition& source_decomposition, const MorphOptions& options) {
   // The interfaces check it first; the same check for direct callers.
   check_frames(options.frames, OptionSpelling::Keyword);
   MorphResult result;
@@ -194,7 +199,6 @@ MorphResult morph_triangulation(const FigureTriangulation& triangulation, const 
   require_figure_edges(triangulation, source);
   const double setup_ms = ms_since(start);
 
-  const Decomposition source_decomposition = decompose(source);
   result.frames.reserve(options.frames);
   for (int f = 0; f < options.frames; ++f) {
     CheckedFrame frame =
@@ -212,6 +216,11 @@ MorphResult morph_triangulation(const FigureTriangulation& triangulation, const 
 
 MorphResult linear_morph(const StickFigure& source, const StickFigure& target, int frames,
                          std::vector<int>* invalid_frames) {
+  return linear_morph(source, target, frames, invalid_frames, nullptr);
+}
+
+MorphResult linear_morph(const StickFigure& source, const StickFigure& target, int frames,
+                         std::vector<int>* invalid_frames, const Decomposition* source_decomposition) {
   check_frames(frames, OptionSpelling::Keyword);
   if (source.vertices.size() != target.vertices.size())
     throw InvalidArgumentError("the source has " + std::to_string(source.vertices.size()) +
@@ -238,9 +247,10 @@ MorphResult linear_morph(const StickFigure& source, const StickFigure& target, i
   if (invalid_frames) {
     start = Clock::now();
     invalid_frames->clear();
-    const Decomposition source_decomposition = decompose(source);
+    const Decomposition own = source_decomposition ? Decomposition{} : decompose(source);
+    const Decomposition& decomposition = source_decomposition ? *source_decomposition : own;
     for (int f = 0; f < frames; ++f)
-      if (!is_frame_valid(source, source_decomposition, result.frames[f])) invalid_frames->push_back(f);
+      if (!is_frame_valid(source, decomposition, result.frames[f])) invalid_frames->push_back(f);
     result.stats.verify_ms = ms_since(start);
   }
   return result;

@@ -114,6 +114,11 @@ struct MorphResult {
 MorphResult morph_triangulation(const FigureTriangulation& triangulation, const StickFigure& source,
                                 const MorphOptions& options = {});
 
+/// As above, with decompose(source) already made (a CompatiblePair's), so
+/// that the frames are checked against it without decomposing it again.
+MorphResult morph_triangulation(const FigureTriangulation& triangulation, const StickFigure& source,
+                                const Decomposition& source_decomposition, const MorphOptions& options);
+
 /// The weight matrix of one embedding of `triangulation` (positions: its
 /// source or target, node_count() by 2). #nodes by #nodes, row-major; the
 /// row of an interior node (figure or Steiner) holds its weights over its
@@ -188,5 +193,10 @@ std::vector<Vec2> solve_morph_frame(const FigureTriangulation& triangulation, do
 ///         vertex counts differ).
 MorphResult linear_morph(const StickFigure& source, const StickFigure& target, int frames,
                          std::vector<int>* invalid_frames = nullptr);
+
+/// As above; `source_decomposition`, if not null, is decompose(source)
+/// (a CompatiblePair's), which the frame checks then reuse.
+MorphResult linear_morph(const StickFigure& source, const StickFigure& target, int frames,
+                         std::vector<int>* invalid_frames, const Decomposition* source_decomposition);
 
 }  // namespace stickmorph

@@ -10,7 +10,6 @@
 
 #include "stickmorph/compatibility.h"
 #include "stickmorph/errors.h"
-#include "stickmorph/figure_parts.h"
 #include "stickmorph/working_scale.h"
 
 namespace stickmorph {
@@ -26,8 +25,9 @@ double milliseconds_since(std::chrono::steady_clock::time_point start) {
 // similarity pair maps back onto the source up to rounding, and is then
 // snapped onto it exactly, so that its morph needs no Steiner vertex and is
 // the similarity itself.
-std::optional<StickFigure> normalised_target(const StickFigure& source, const StickFigure& target,
-                                             const SimilarityMotion& similarity) {
+std::optional<CompatiblePair> normalised_pair(const CompatiblePair& pair, const SimilarityMotion& similarity) {
+  const StickFigure& source = pair.source();
+  const StickFigure& target = pair.target();
   std::vector<Vec2> vertices;
   vertices.reserve(target.vertices.size());
   double radius = 0, largest_gap = 0;
@@ -44,20 +44,24 @@ std::optional<StickFigure> normalised_target(const StickFigure& source, const St
   std::vector<std::array<std::int64_t, 2>> edges;
   for (const Edge& e : target.edges) edges.push_back({e[0], e[1]});
   try {
+    // A third figure, decomposed once and checked against the source's
+    // decomposition, which the pair already has.
     StickFigure figure = make_stick_figure(std::move(vertices), edges, target.name);
-    if (!check_compatibility(source, figure).compatible()) return std::nullopt;
-    return figure;
+    Decomposition decomposition = decompose(figure);
+    return CompatiblePair::check(source, pair.source_decomposition(), std::move(figure), std::move(decomposition));
   } catch (const InvalidFigureError&) {
+    return std::nullopt;
+  } catch (const IncompatibleFiguresError&) {
     return std::nullopt;
   }
 }
 
-GuidedMorph prepare_rigid_morph_checked(const StickFigure& source, const StickFigure& target,
-                                        const MorphStickFiguresOptions& options,
+GuidedMorph prepare_rigid_morph_checked(const CompatiblePair& pair, const MorphStickFiguresOptions& options,
                                         const FigureTriangulationOptions& paper_options, WeightKind weights,
                                         MorphStickFiguresStats& stats) {
-  // The user's pair must be compatible: its report, not the mapped-back one's.
-  require_compatible(source, target);
+  // The user's pair is checked (its report, not the mapped-back one's).
+  const StickFigure& source = pair.source();
+  const StickFigure& target = pair.target();
   const SimilarityMotion similarity =
       fit_similarity(source.vertices, target.vertices, options.rotation.value_or(RotationDirection::Short),
                      int(options.turns.value_or(0)));
@@ -67,7 +71,7 @@ GuidedMorph prepare_rigid_morph_checked(const StickFigure& source, const StickFi
   const Easing easing = options.easing.value_or(Easing::None);
   try {
     auto start = std::chrono::steady_clock::now();
-    const std::optional<StickFigure> normalised = normalised_target(source, target, similarity);
+    const std::optional<CompatiblePair> normalised = normalised_pair(pair, similarity);
     // The enclosure holds the guide's whole way as the triangulation sees
     // it (mapped back by the similarity when that is factored out), not
     // only its two ends (FigureTriangulationOptions::enclosed_points).
@@ -95,15 +99,15 @@ GuidedMorph prepare_rigid_morph_checked(const StickFigure& source, const StickFi
     auto triangulate_pair_itself = [&] {
       triangulation_options.enclosed_points = unmapped_points;
       try {
-        triangulation = triangulate_figures(source, target, triangulation_options, &stats.triangulation);
+        triangulation = triangulate_figures(pair, triangulation_options, &stats.triangulation);
       } catch (const VerificationError&) {
-        triangulation = triangulate_figures(source, target, paper_options, &stats.triangulation);
+        triangulation = triangulate_figures(pair, paper_options, &stats.triangulation);
       }
     };
     bool mapped_back = normalised.has_value();
     if (mapped_back) {
       try {
-        triangulation = triangulate_figures(source, *normalised, triangulation_options, &stats.triangulation);
+        triangulation = triangulate_figures(*normalised, triangulation_options, &stats.triangulation);
       } catch (const VerificationError&) {
         mapped_back = false;
       }
@@ -117,7 +121,8 @@ GuidedMorph prepare_rigid_morph_checked(const StickFigure& source, const StickFi
       if (!guide) guide.emplace(source, target.vertices, similarity);
       RigidGuide own = std::move(*guide);
       guide.reset();
-      morph.emplace(triangulation, source, target.vertices, factored, std::move(own), weights, easing);
+      morph.emplace(triangulation, source, pair.source_decomposition(), target.vertices, factored, std::move(own),
+                    weights, easing);
     };
     if (mapped_back) {
       try {
@@ -140,7 +145,7 @@ GuidedMorph prepare_rigid_morph_checked(const StickFigure& source, const StickFi
         // the paper's own triangulation of the pair, the barycentric
         // method's, is the last resort.
         const auto again = std::chrono::steady_clock::now();
-        triangulation = triangulate_figures(source, target, paper_options, &stats.triangulation);
+        triangulation = triangulate_figures(pair, paper_options, &stats.triangulation);
         stats.triangulate_ms += milliseconds_since(again);
         make(SimilarityMotion{});
       }
@@ -156,10 +161,11 @@ GuidedMorph prepare_rigid_morph_checked(const StickFigure& source, const StickFi
   }
 }
 
-void morph_rigidly(const StickFigure& source, const StickFigure& target, const MorphStickFiguresOptions& options,
+void morph_rigidly(const CompatiblePair& pair, const MorphStickFiguresOptions& options,
                    MorphStickFiguresResult& result) {
   MorphStickFiguresStats& stats = result.stats;
-  GuidedMorph morph = prepare_rigid_morph_checked(source, target, options, result.triangulation_options,
+  const StickFigure& source = pair.source();
+  GuidedMorph morph = prepare_rigid_morph_checked(pair, options, result.triangulation_options,
                                                   result.morph_options.weights, stats);
   GuidedMorphStats guided;
   const auto start = std::chrono::steady_clock::now();
@@ -215,11 +221,12 @@ GuidedMorph prepare_rigid_morph(const StickFigure& source, const StickFigure& ta
     throw InvalidArgumentError("prepare_rigid_morph takes figures that correspond by index: match them with "
                                "correspond_figures first and pass its source and target");
   check_numeric_range(source, target, MorphMethod::Rigid);
+  const CompatiblePair pair = CompatiblePair::check(source, target);
   FigureTriangulationOptions paper;
   paper.method = options.steiner.value_or(SteinerMethod::Improved);
   paper.enclosure_sides = options.enclosure_sides ? int(*options.enclosure_sides) : kDefaultEnclosureSides;
   MorphStickFiguresStats measured;
-  GuidedMorph morph = prepare_rigid_morph_checked(source, target, options, paper,
+  GuidedMorph morph = prepare_rigid_morph_checked(pair, options, paper,
                                                   options.weights.value_or(WeightKind::MeanValue), measured);
   if (stats) *stats = measured;
   return morph;
@@ -227,10 +234,10 @@ GuidedMorph prepare_rigid_morph(const StickFigure& source, const StickFigure& ta
 
 namespace {
 
-// Steps 1-5 on a pair that corresponds by index, at the scale it is given
-// in; options already checked.
-MorphStickFiguresResult morph_at_scale(const StickFigure& source, const StickFigure& target,
-                                       const MorphStickFiguresOptions& options) {
+// Steps 2-5 on a checked pair, at the scale it is given in; options
+// already checked. Rigid and barycentric only.
+// A result with the options in effect, defaults filled in, and the parts.
+MorphStickFiguresResult initial_result(const CompatiblePair& pair, const MorphStickFiguresOptions& options) {
   MorphStickFiguresResult result;
   result.triangulation_options.method = options.steiner.value_or(SteinerMethod::Improved);
   result.triangulation_options.enclosure_sides =
@@ -239,26 +246,17 @@ MorphStickFiguresResult morph_at_scale(const StickFigure& source, const StickFig
   result.morph_options.weights = options.weights.value_or(WeightKind::MeanValue);
   result.morph_options.verify = options.verify.value_or(true);
   result.morph_options.frame_check = options.frame_check.value_or(FrameCheck::Certificate);
-  MorphStickFiguresStats& stats = result.stats;
-  stats.triangulation.parts = figure_parts(source).count();
+  result.stats.triangulation.parts = pair.parts();
+  return result;
+}
 
-  if (options.method == MorphMethod::Linear) {
-    // The paper's Figure 8d baseline needs compatible figures like the real
-    // morph, so that both refuse the same pairs; its invalid frames are
-    // reported, not refused.
-    require_compatible(source, target);
-    const auto start = std::chrono::steady_clock::now();
-    MorphResult linear = linear_morph(source, target, result.morph_options.frames, &stats.invalid_frames);
-    stats.morph_ms = milliseconds_since(start);
-    stats.solve_ms = linear.stats.solve_ms;
-    stats.verify_ms = linear.stats.verify_ms;
-    result.times = std::move(linear.times);
-    result.frames = std::move(linear.frames);
-    return result;
-  }
+MorphStickFiguresResult morph_at_scale(const CompatiblePair& pair, const MorphStickFiguresOptions& options) {
+  const StickFigure& source = pair.source();
+  MorphStickFiguresResult result = initial_result(pair, options);
+  MorphStickFiguresStats& stats = result.stats;
 
   if (options.method == MorphMethod::Rigid) {
-    morph_rigidly(source, target, options, result);
+    morph_rigidly(pair, options, result);
     return result;
   }
 
@@ -269,10 +267,10 @@ MorphStickFiguresResult morph_at_scale(const StickFigure& source, const StickFig
   MorphResult morphed;
   try {
     auto start = std::chrono::steady_clock::now();
-    triangulation = triangulate_figures(source, target, result.triangulation_options, &stats.triangulation);
+    triangulation = triangulate_figures(pair, result.triangulation_options, &stats.triangulation);
     stats.triangulate_ms = milliseconds_since(start);
     start = std::chrono::steady_clock::now();
-    morphed = morph_triangulation(triangulation, source, result.morph_options);
+    morphed = morph_triangulation(triangulation, source, pair.source_decomposition(), result.morph_options);
     stats.morph_ms = milliseconds_since(start);
   } catch (const InvalidArgumentError& error) {
     throw InternalError(std::string("morph_stick_figures: the engine refused its own intermediate result: ") +
@@ -302,18 +300,37 @@ MorphStickFiguresResult morph_at_scale(const StickFigure& source, const StickFig
   return result;
 }
 
-// morph_at_scale in the working scale (working_scale.h): pairs beyond the
-// numeric stages' comfortable range are morphed multiplied by an exact
-// power of two, and the results multiplied back. The straight-line morph
-// has no numeric stage to protect: its frames are verified as they are.
-MorphStickFiguresResult morph_corresponding(const StickFigure& source, const StickFigure& target,
-                                            const MorphStickFiguresOptions& options) {
+// Algorithm 3 on a pair that corresponds by index: the pair checked once
+// (validation is the figures', Algorithm 1 and compatibility the
+// CompatiblePair's), then morph_at_scale in the working scale
+// (working_scale.h): pairs beyond the numeric stages' comfortable range
+// are morphed multiplied by an exact power of two, and the results
+// multiplied back. The straight-line morph has no numeric stage to
+// protect: its frames are verified as they are.
+MorphStickFiguresResult morph_corresponding(const CompatiblePair& pair, const MorphStickFiguresOptions& options) {
+  const StickFigure& source = pair.source();
+  const StickFigure& target = pair.target();
+  if (options.method == MorphMethod::Linear) {
+    // The paper's Figure 8d baseline needs compatible figures like the real
+    // morph, so that both refuse the same pairs; its invalid frames are
+    // reported, not refused.
+    MorphStickFiguresResult result = initial_result(pair, options);
+    MorphStickFiguresStats& stats = result.stats;
+    const auto start = std::chrono::steady_clock::now();
+    MorphResult linear = linear_morph(source, target, result.morph_options.frames, &stats.invalid_frames,
+                                      &pair.source_decomposition());
+    stats.morph_ms = milliseconds_since(start);
+    stats.solve_ms = linear.stats.solve_ms;
+    stats.verify_ms = linear.stats.verify_ms;
+    result.times = std::move(linear.times);
+    result.frames = std::move(linear.frames);
+    return result;
+  }
   check_numeric_range(source, target, options.method);
-  const int exponent = options.method == MorphMethod::Linear ? 0 : working_scale_exponent(source, target);
-  if (exponent == 0) return morph_at_scale(source, target, options);
-  MorphStickFiguresResult result =
-      morph_at_scale(scaled_figure(source, exponent), scaled_figure(target, exponent), options);
-  scale_result_back(result, source, exponent);
+  const int exponent = working_scale_exponent(source, target);
+  if (exponent == 0) return morph_at_scale(pair, options);
+  MorphStickFiguresResult result = morph_at_scale(scaled_pair(pair, exponent), options);
+  scale_result_back(result, pair, exponent);
   return result;
 }
 
@@ -322,11 +339,15 @@ MorphStickFiguresResult morph_corresponding(const StickFigure& source, const Sti
 MorphStickFiguresResult morph_stick_figures(const StickFigure& source, const StickFigure& target,
                                             const MorphStickFiguresOptions& options) {
   check_morph_options(options);
-  if (options.correspond == CorrespondenceMode::ByIndex) return morph_corresponding(source, target, options);
+  if (options.correspond == CorrespondenceMode::ByIndex)
+    return morph_corresponding(CompatiblePair::check(source, target), options);
   CorrespondenceOptions matching;
   matching.pins = options.pins;
   FigureCorrespondence correspondence = correspond_figures(source, target, matching);
-  MorphStickFiguresResult result = morph_corresponding(correspondence.source, correspondence.target, options);
+  // The match ends with the check of the matched pair; it is not run again.
+  MorphStickFiguresResult result = morph_corresponding(
+      correspondence.pair ? *correspondence.pair : CompatiblePair::check(correspondence.source, correspondence.target),
+      options);
   result.stats.correspond_ms = correspondence.milliseconds;
   result.correspondence = std::move(correspondence);
   return result;

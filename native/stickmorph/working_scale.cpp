@@ -146,7 +146,17 @@ void scale_frame_back(std::vector<Vec2>& positions, int exponent, const StickFig
   reverify_frame(source, source_decomposition, figure, frame_index, time);
 }
 
-void scale_result_back(MorphStickFiguresResult& result, const StickFigure& source, int exponent) {
+CompatiblePair scaled_pair(const CompatiblePair& pair, int exponent) {
+  CompatiblePair scaled = pair;
+  // Exact by working_scale_exponent's choice: an angle sum of Algorithm 1
+  // is the same for the scaled figure, and so is every orientation.
+  scale_points(scaled.source_.vertices, exponent);
+  scale_points(scaled.target_.vertices, exponent);
+  return scaled;
+}
+
+void scale_result_back(MorphStickFiguresResult& result, const CompatiblePair& pair, int exponent) {
+  const StickFigure& source = pair.source();
   if (exponent == 0) return;
   const int back = -exponent;
   std::vector<bool> exact(result.frames.size(), true);
@@ -157,9 +167,8 @@ void scale_result_back(MorphStickFiguresResult& result, const StickFigure& sourc
     for (double& c : *center) c = std::ldexp(c, back);
   // What rounding touched is checked again as it will be written.
   if (std::find(exact.begin(), exact.end(), false) != exact.end()) {
-    const Decomposition decomposition = decompose(source);
     for (std::size_t f = 0; f < result.frames.size(); ++f)
-      if (!exact[f]) reverify_frame(source, decomposition, result.frames[f], int(f), result.times[f]);
+      if (!exact[f]) reverify_frame(source, pair.source_decomposition(), result.frames[f], int(f), result.times[f]);
   }
   if (result.triangulation) scale_triangulation_back(*result.triangulation, source, exponent);
 }

@@ -28,6 +28,7 @@
 
 #include <vector>
 
+#include "stickmorph/compatibility.h"
 #include "stickmorph/decomposition.h"
 #include "stickmorph/figure_triangulation.h"
 #include "stickmorph/morph_stick_figures.h"
@@ -81,6 +82,11 @@ bool scale_points(std::vector<Vec2>& points, int exponent);
 /// working_scale_exponent made exact: the same stick figure, not checked again.
 StickFigure scaled_figure(const StickFigure& figure, int exponent);
 
+/// The checked pair with both figures multiplied by 2^exponent, exactly (as
+/// scaled_figure): the same plane graphs, so the decompositions and the
+/// proof of compatibility carry over unchanged.
+CompatiblePair scaled_pair(const CompatiblePair& pair, int exponent);
+
 /// The larger side of the figure's bounding box (0 for a single point).
 double figure_size(const StickFigure& figure);
 
@@ -107,6 +113,6 @@ void scale_frame_back(std::vector<Vec2>& positions, int exponent, const StickFig
 /// where that was not exact.
 /// @throws NumericRangeError if such a frame or the triangulation is no
 ///         longer valid at the figures' own scale.
-void scale_result_back(MorphStickFiguresResult& result, const StickFigure& source, int exponent);
+void scale_result_back(MorphStickFiguresResult& result, const CompatiblePair& pair, int exponent);
 
 }  // namespace stickmorph

@@ -393,7 +393,7 @@ TEST_CASE("GuidedMorph is what morph_stick_figures runs for method Rigid", "[gui
   for (const Pair& pair : pairs) {
     CAPTURE(pair.name);
     const RigidParts parts = rigid_parts(pair.source, pair.target);
-    GuidedMorph morph(parts.normalised, pair.source, pair.target.vertices, parts.similarity,
+    GuidedMorph morph(parts.normalised, pair.source, decompose(pair.source), pair.target.vertices, parts.similarity,
                       RigidGuide(pair.source, pair.target.vertices, parts.similarity), WeightKind::MeanValue,
                       Easing::None);
     CHECK(morph.similarity().angle == parts.similarity.angle);
@@ -418,7 +418,7 @@ TEST_CASE("GuidedMorph frames at the guide's even-speed parameter where it follo
   const StickFigure source = stick_man_standing(), target = stick_man_walking();
   const RigidParts parts = rigid_parts(source, target);
   for (Easing easing : {Easing::None, Easing::InOut}) {
-    GuidedMorph morph(parts.normalised, source, target.vertices, parts.similarity,
+    GuidedMorph morph(parts.normalised, source, decompose(source), target.vertices, parts.similarity,
                       RigidGuide(source, target.vertices, parts.similarity), WeightKind::MeanValue, easing);
     const RigidGuide guide(source, target.vertices, parts.similarity);
     for (double t : {0.1, 0.5, 0.8}) {
@@ -434,7 +434,7 @@ TEST_CASE("GuidedMorph frames at the guide's even-speed parameter where it follo
 TEST_CASE("GuidedMorph scrubs: any time, any order, exact ends", "[guided_morph]") {
   const Pair pair = read_pair("paper/s_to_u");
   const RigidParts parts = rigid_parts(pair.source, pair.target);
-  GuidedMorph morph(parts.normalised, pair.source, pair.target.vertices, parts.similarity,
+  GuidedMorph morph(parts.normalised, pair.source, decompose(pair.source), pair.target.vertices, parts.similarity,
                     RigidGuide(pair.source, pair.target.vertices, parts.similarity), WeightKind::MeanValue,
                     Easing::InOut);
 
@@ -486,7 +486,7 @@ TEST_CASE("GuidedMorph without a similarity morphs the pair itself", "[guided_mo
   const Pair pair = read_pair("pairs/compatible/letter_a");
   const FigureTriangulation tri = triangulate_figures(pair.source, pair.target);
   const SimilarityMotion similarity = fit_similarity(pair.source.vertices, pair.target.vertices);
-  GuidedMorph morph(tri, pair.source, pair.target.vertices, SimilarityMotion{},
+  GuidedMorph morph(tri, pair.source, decompose(pair.source), pair.target.vertices, SimilarityMotion{},
                     RigidGuide(pair.source, pair.target.vertices, similarity), WeightKind::MeanValue, Easing::None);
   CHECK(morph.similarity().is_identity());
   CHECK(morph.triangulation().target == tri.target);
@@ -510,7 +510,7 @@ TEST_CASE("GuidedMorph refuses a target of the wrong size", "[guided_morph]") {
   std::vector<Vec2> short_target = pair.target.vertices;
   short_target.pop_back();
   CHECK_THROWS_AS(
-      GuidedMorph(parts.normalised, pair.source, short_target, parts.similarity,
+      GuidedMorph(parts.normalised, pair.source, decompose(pair.source), short_target, parts.similarity,
                   RigidGuide(pair.source, pair.target.vertices, parts.similarity), WeightKind::MeanValue, Easing::None),
       InvalidArgumentError);
 }

@@ -198,8 +198,10 @@ FigureCorrespondence correspond_connected(const StickFigure& source, const Stick
     throw VerificationError(std::string("correspond: the matched figure cannot be drawn in floating point: ") +
                             error.what() + " (vertices of one drawing closer together than the other's rounding)");
   }
-  const CompatibilityReport report = check_compatibility(result.source, result.target);
-  if (!report.compatible())
+  CompatibilityReport report;
+  result.pair = CompatiblePair::try_check(result.source, decompose(result.source), result.target,
+                                          decompose(result.target), report);
+  if (!result.pair)
     throw InternalError("correspond: the matched figures are not compatible: " + report.reason);
   result.milliseconds = milliseconds_since(start);
   return result;

@@ -375,9 +375,14 @@ BridgedFigures bridge_parts(const StickFigure& source, const Decomposition& dec,
   }
   if (figure_parts(result.source).count() != 1)
     throw InternalError("part bridges: the bridged figure still has several parts");
-  const CompatibilityReport report = check_compatibility(result.source, result.target);
-  if (!report.compatible())
-    throw VerificationError("bridging the figure's parts: the bridged figures are not compatible: " + report.reason);
+  try {
+    result.pair = CompatiblePair::check(result.source, result.target);
+  } catch (const IncompatibleFiguresError& error) {
+    // The reason without the error's own "incompatible figures: ".
+    const std::string what = error.what(), prefix = "incompatible figures: ";
+    throw VerificationError("bridging the figure's parts: the bridged figures are not compatible: " +
+                            (what.compare(0, prefix.size(), prefix) == 0 ? what.substr(prefix.size()) : what));
+  }
   return result;
 }
 

@@ -19,6 +19,9 @@
 // valid, the shorter one padded to as many bends as the other.
 #pragma once
 
+#include <optional>
+
+#include "stickmorph/compatibility.h"
 #include "stickmorph/decomposition.h"
 #include "stickmorph/stick_figure.h"
 
@@ -29,6 +32,9 @@ struct BridgedFigures {
   /// bridges' bends (as many in both); the figure's edges in their order,
   /// then the bridges' edges.
   StickFigure source, target;
+  /// The same two, checked compatible (exactly, as the construction
+  /// promises): what the triangulation of the bridged figure takes.
+  std::optional<CompatiblePair> pair;
   int bridges = 0;  ///< number of bridges: parts - 1
   int bends = 0;    ///< vertices added on them
 };

@@ -421,7 +421,9 @@ FigureCorrespondence correspond_parts(const StickFigure& source, const StickFigu
   }
   // Each part pair is compatible by construction; the nesting is the pair's
   // own (the matched part i is the source's part i), and is checked here.
-  const CompatibilityReport report = check_compatibility(result.source, result.target);
+  CompatibilityReport report;
+  result.pair = CompatiblePair::try_check(result.source, decompose(result.source), result.target,
+                                          decompose(result.target), report);
   if (report.kind == Incompatibility::NestingDiffers)
     throw IncompatibleFiguresError(Incompatibility::NestingDiffers,
                                    "correspond: with the parts matched by shape and place, " + report.reason +
