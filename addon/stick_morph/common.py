@@ -37,34 +37,9 @@ ENGINE_LIMITS = {
 }
 
 
-
-# Which morph methods ("rigid", "barycentric", "linear") each of the engine's
-# morph() options applies to: a copy of the "methods" of the engine's
-# stickmorph.option_rules, the one place the add-on keeps this rule. A copy
-# for the same reason as ENGINE_LIMITS: the panel greys out options without
-# the module (ui.row_active), and compute_morph sends a motion only the
-# options that apply to it (the engine refuses the others) from the same
-# table. tests/python/test_addon_option_rules.py asserts that it equals the
-# module's table.
-_ALL_METHODS = ("rigid", "barycentric", "linear")
-_TRIANGULATED = ("rigid", "barycentric")  # the methods with a compatible triangulation
-OPTION_METHODS = {
-    "frames": _ALL_METHODS,
-    "method": _ALL_METHODS,
-    "verify": _TRIANGULATED,
-    "frame_check": _TRIANGULATED,
-    "weights": _TRIANGULATED,
-    "steiner": _TRIANGULATED,
-    "enclosure_sides": _TRIANGULATED,
-    "rotation": ("rigid",),
-    "turns": ("rigid",),
-    "easing": ("rigid",),
-    "correspond": _ALL_METHODS,
-    "pins": _ALL_METHODS,
-}
-
 # The add-on's properties that only some motions use, each with the engine
-# option whose methods decide it. The triangulation exists where the
+# option whose methods decide it (the engine's stickmorph.option_rules, read
+# by native.option_methods). The triangulation exists where the
 # triangulation's own options (steiner) apply. The add-on's easing is not
 # here: it applies to every motion (for BARYCENTRIC and LINEAR the add-on
 # picks frames itself, timing.ease_sample_indices).
@@ -78,16 +53,22 @@ PROPERTY_OPTIONS = {
 }
 
 
-def option_applies(option: str, motion: str) -> bool:
+def option_applies(option: str, motion: str, option_methods: dict) -> bool:
     """Whether the engine option `option` applies to the add-on's motion
-    (RIGID, BARYCENTRIC, LINEAR: the engine's method in upper case)."""
-    return motion.lower() in OPTION_METHODS[option]
+    (RIGID, BARYCENTRIC, LINEAR: the engine's method in upper case).
+    option_methods: the engine's rule, native.option_methods() (the methods
+    each option of stickmorph.morph applies to); the add-on keeps no copy."""
+    return motion.lower() in option_methods[option]
 
 
-def property_applies(name: str, motion: str) -> bool:
-    """Whether the add-on's property `name` has an effect with this motion."""
+def property_applies(name: str, motion: str, option_methods: dict | None) -> bool:
+    """Whether the add-on's property `name` has an effect with this motion.
+    Without the engine's rule (option_methods None: the module does not
+    load, so nothing can be baked and the panel says why) every property
+    counts as applying: nothing is greyed out on a guess."""
     option = PROPERTY_OPTIONS.get(name)
-    return option is None or option_applies(option, motion)
+    return option is None or option_methods is None or option_applies(option, motion, option_methods)
+
 
 # A pin is a vertex group of this name prefix (any case) in both meshes,
 # holding one vertex in each: those two vertices must match (core.read_pins).

@@ -41,7 +41,7 @@ height then moves in step with the figure.
 # The settings and the error type live in common.py, which imports without
 # numpy; they are part of core's interface too.
 from .common import BakeSettings, StickMorphError, is_pin_group, next_pin_name, pin_names  # noqa: F401
-from .native import load_engine, engine_limits  # noqa: F401
+from .native import load_engine, engine_limits, option_methods  # noqa: F401
 from .plane import PLANES, Plane, fit_plane, project, unproject, planarity_deviation  # noqa: F401
 from .correspondence import (  # noqa: F401
     CORRESPONDENCES, Pin, Matching, edge_set, compare_edge_sets, figure_parts, parts_summary,

@@ -14,7 +14,7 @@ from .common import BakeSettings, StickMorphError, is_pin_group, option_applies
 from .correspondence import (_BY_INDEX, CORRESPONDENCES, Matching, _names, check_pins, choose_correspondence,
                              compare_edge_sets, matched_heights, read_pins)
 from .messages import engine_error_message, match_error_message
-from .native import load_engine
+from .native import load_engine, option_methods
 from .plane import Plane, fit_plane, planarity_deviation, project, unproject
 from .timing import EASINGS, RIGID_EASINGS, ease, ease_sample_indices, engine_frame_count, frame_list
 
@@ -262,8 +262,8 @@ def compute_morph(prepared: PreparedPair, settings: BakeSettings) -> MorphResult
         raise StickMorphError(f"the extra turns must be a whole number from {-limits['max_turns']} to "
                               f"{limits['max_turns']}, got {turns!r}")
     m = engine_frame_count(frame_count, easing, motion)
-    # Only the options that apply to the motion (common.OPTION_METHODS, the
-    # engine's rule): the engine refuses an option it would ignore, so
+    # Only the options that apply to the motion (the engine's rule,
+    # native.option_methods): the engine refuses an option it would ignore, so
     # LINEAR gets none of these. verify: every frame is checked exactly;
     # easing for BARYCENTRIC picks engine frames instead of interpolating
     # (ease_sample_indices) so that what is baked is what was verified.
@@ -277,7 +277,8 @@ def compute_morph(prepared: PreparedPair, settings: BakeSettings) -> MorphResult
     # engine gets exactly frame_count frames and easing="in-out".
     candidates = dict(steiner=settings.steiner, weights=settings.weights, enclosure_sides=enclosure_sides,
                       verify=True, rotation=rotation.lower(), turns=turns, easing=RIGID_EASINGS[easing])
-    options = {name: value for name, value in candidates.items() if option_applies(name, motion)}
+    applies = option_methods()
+    options = {name: value for name, value in candidates.items() if option_applies(name, motion, applies)}
     try:
         result = engine.morph(prepared.source_xy, prepared.target_xy, prepared.edges, frames=m,
                               method=motion.lower(), **options)

@@ -27,3 +27,11 @@ def engine_limits() -> dict:
     cannot disagree with the engine's; common.ENGINE_LIMITS is the copy for
     registration, when the module may be missing."""
     return load_engine().limits
+
+
+def option_methods() -> dict:
+    """Which methods ("rigid", "barycentric", "linear") each option of
+    stickmorph.morph applies to, from the engine's own rule table
+    (stickmorph.option_rules): the panel greys out and compute_morph leaves
+    out exactly what the engine would refuse."""
+    return {name: tuple(rule["methods"]) for name, rule in load_engine().option_rules.items()}

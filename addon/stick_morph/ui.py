@@ -14,7 +14,7 @@ import textwrap
 
 import bpy
 
-from .common import OPTION_METHODS, PROPERTY_OPTIONS, StickMorphError, pin_names, property_applies
+from .common import StickMorphError, pin_names, property_applies
 from .helpers import dependency_status, edited_meshes, resolve_pair
 from .properties import OPTION_NAMES
 
@@ -45,20 +45,25 @@ ADVANCED_FULL = (("enclosure_sides", None),)
 ADVANCED_LABELLED = (("planarity_tolerance", "Planarity tolerance:"),)
 ADVANCED = tuple(name for name, _ in ADVANCED_SPLIT + ADVANCED_FULL + ADVANCED_LABELLED)
 
-# Options that only some motions use: drawn greyed out (row.active = False,
-# still editable, as Blender greys out settings that have no effect) when
-# the data's motion is not one of them. Both derive from the one table of
-# which engine option applies to which method (common.OPTION_METHODS).
-RIGID_ONLY = tuple(name for name, option in PROPERTY_OPTIONS.items() if OPTION_METHODS[option] == ("rigid",))
-NOT_LINEAR = tuple(name for name, option in PROPERTY_OPTIONS.items()
-                   if OPTION_METHODS[option] == ("rigid", "barycentric"))
-
-
+# Options that only some motions use are drawn greyed out (row.active =
+# False, still editable, as Blender greys out settings that have no effect)
+# when the data's motion is not one of them, by the engine's own rule of
+# which option applies to which method (native.option_methods).
 def row_active(data, name):
     """Whether the option `name` has an effect with the other options of data."""
     if name == "tube_radius":
         return bool(getattr(data, "renderable", True))
-    return property_applies(name, getattr(data, "motion", "RIGID"))
+    return property_applies(name, getattr(data, "motion", "RIGID"), _option_methods())
+
+
+def _option_methods():
+    """The engine's rule, or None where the module does not load (the panel
+    says so; nothing is greyed out on a guess). Loaded only after the cached
+    dependency check passed, so a redraw never retries a failing import."""
+    if not dependency_status().ok:
+        return None
+    from .native import option_methods  # needs NumPy and the module: only when they load
+    return option_methods()
 
 
 def _wrap(context, text):

@@ -1,7 +1,7 @@
 """docs/ARCHITECTURE.md must stay in step with the source tree.
 
-- every .h, .cpp, .py and .sh file under native/, addon/stick_morph/ and
-  scripts/ is named in it by its path from the repository root (in a code
+- every .h, .cpp, .py and .sh file under native/, addon/stick_morph/,
+  scripts/ and bench/ is named in it by its path from the repository root (in a code
   span, e.g. `native/stickmorph/morph.h`);
 - every repository path it names in a code span exists (a `*` in a path must
   match at least one file).
@@ -16,13 +16,13 @@ REPO = pathlib.Path(__file__).resolve().parents[2]
 DOCUMENT = REPO / "docs" / "ARCHITECTURE.md"
 
 # Folders whose sources the document must list, and the suffixes that count.
-LISTED_FOLDERS = ("native", "addon/stick_morph", "scripts")
+LISTED_FOLDERS = ("native", "addon/stick_morph", "scripts", "bench")
 LISTED_SUFFIXES = {".h", ".cpp", ".py", ".sh"}
 SKIPPED_PARTS = {"__pycache__"}
 
 # A code span that is a path from the repository root: it starts with one of
 # the repository's top-level folders or files.
-TOP_LEVEL = ("native/", "addon/", "scripts/", "tests/", "docs/", "blend_samples/", "build_addon.py",
+TOP_LEVEL = ("native/", "addon/", "scripts/", "bench/", "tests/", "docs/", "blend_samples/", "build_addon.py",
              "CMakeLists.txt", "README.md", "BENCHMARKS.md")
 CODE_SPAN = re.compile(r"(`+)(.+?)\1", re.DOTALL)
 PATH = re.compile(r"^[\w./*+-]+$")
