@@ -89,10 +89,11 @@ std::set<DirectedEdge> undirected_set(const StickFigure& figure) {
   return edges;
 }
 
-}  // namespace
-
-CompatibilityReport check_compatibility(const StickFigure& source, const Decomposition& source_dec,
-                                        const StickFigure& target, const Decomposition& target_dec) {
+// check_compatibility, also giving the parts and the source's nesting it
+// found (CompatiblePair keeps them; nothing recomputes them).
+CompatibilityReport compare_figures(const StickFigure& source, const Decomposition& source_dec,
+                                    const StickFigure& target, const Decomposition& target_dec, FigureParts* parts_out,
+                                    PartNesting* source_nesting_out) {
   internal::stage_counters().compatibility_checks.fetch_add(1, std::memory_order_relaxed);
   const std::size_t n = source.vertices.size();
   if (n != target.vertices.size())
@@ -187,9 +188,10 @@ CompatibilityReport check_compatibility(const StickFigure& source, const Decompo
 
   // Issue 14: each part is compatible on its own (above); the parts must also
   // nest alike. Same edge sets give the same parts.
-  const FigureParts parts = figure_parts(source);
+  FigureParts parts = figure_parts(source);
+  PartNesting source_nesting;
+  if (parts.count() > 1 || source_nesting_out) source_nesting = part_nesting(source, source_dec, parts);
   if (parts.count() > 1) {
-    const PartNesting source_nesting = part_nesting(source, source_dec, parts);
     const PartNesting target_nesting = part_nesting(target, target_dec, parts);
     // Where part D lies relative to part C: the key of C's bounded face
     // holding it, or {-1, -1} for C's exterior.
@@ -202,7 +204,8 @@ CompatibilityReport check_compatibility(const StickFigure& source, const Decompo
     for (int part = 0; part < parts.count(); ++part) {
       // The containers to compare: those of either figure, in order.
       std::vector<int> containers;
-      for (const auto* nesting : {&source_nesting, &target_nesting})
+      const PartNesting* both[] = {&source_nesting, &target_nesting};
+      for (const PartNesting* nesting : both)
         for (const auto& entry : nesting->enclosing[std::size_t(part)]) containers.push_back(entry.first);
       std::sort(containers.begin(), containers.end());
       for (int container : containers) {
@@ -223,7 +226,16 @@ CompatibilityReport check_compatibility(const StickFigure& source, const Decompo
       }
     }
   }
+  if (parts_out) *parts_out = std::move(parts);
+  if (source_nesting_out) *source_nesting_out = std::move(source_nesting);
   return CompatibilityReport{};
+}
+
+}  // namespace
+
+CompatibilityReport check_compatibility(const StickFigure& source, const Decomposition& source_dec,
+                                        const StickFigure& target, const Decomposition& target_dec) {
+  return compare_figures(source, source_dec, target, target_dec, nullptr, nullptr);
 }
 
 CompatibilityReport check_compatibility(const StickFigure& source, const StickFigure& target) {
@@ -252,9 +264,9 @@ CompatiblePair CompatiblePair::check(StickFigure source, Decomposition source_de
 std::optional<CompatiblePair> CompatiblePair::try_check(StickFigure source, Decomposition source_dec,
                                                         StickFigure target, Decomposition target_dec,
                                                         CompatibilityReport& report) {
-  report = check_compatibility(source, source_dec, target, target_dec);
-  if (!report.compatible()) return std::nullopt;
   CompatiblePair pair;
+  report = compare_figures(source, source_dec, target, target_dec, &pair.figure_parts_, &pair.source_nesting_);
+  if (!report.compatible()) return std::nullopt;
   pair.source_ = std::move(source);
   pair.target_ = std::move(target);
   pair.source_dec_ = std::move(source_dec);

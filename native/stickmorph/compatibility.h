@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "stickmorph/decomposition.h"
+#include "stickmorph/figure_parts.h"
 #include "stickmorph/stick_figure.h"
 
 namespace stickmorph {
@@ -81,13 +82,20 @@ class CompatiblePair {
   const Decomposition& source_decomposition() const { return source_dec_; }
   const Decomposition& target_decomposition() const { return target_dec_; }
   /// The number of parts (figure_parts.h), the same in both.
-  int parts() const { return int(source_dec_.exterior_of_part.size()); }
+  int parts() const { return figure_parts_.count(); }
+  /// The parts, the same in both figures (same edges).
+  const FigureParts& figure_parts() const { return figure_parts_; }
+  /// How the source's parts nest (part_nesting), as the check compared it
+  /// with the target's: the same faces, by compatibility.
+  const PartNesting& source_nesting() const { return source_nesting_; }
 
  private:
   CompatiblePair() = default;
   friend CompatiblePair scaled_pair(const CompatiblePair& pair, int exponent);
   StickFigure source_, target_;
   Decomposition source_dec_, target_dec_;
+  FigureParts figure_parts_;
+  PartNesting source_nesting_;
 };
 
 }  // namespace stickmorph

@@ -77,7 +77,7 @@ FigureTriangulation triangulate_at_scale(const CompatiblePair& pair, const Figur
   // vertices, so that the result's first n nodes are the figure's.
   if (source_dec.exterior_of_part.size() > 1) {
     stage_start = Clock::now();
-    const internal::BridgedFigures bridged = internal::bridge_parts(source, source_dec, target);
+    const internal::BridgedFigures bridged = internal::bridge_parts(pair);
     const double bridge_ms = ms_since(stage_start);
     FigureTriangulation joined = triangulate_at_scale(*bridged.pair, options, stats);
     const int n = int(source.vertices.size()), bends = bridged.bends, k = joined.enclosure_vertices;

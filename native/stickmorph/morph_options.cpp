@@ -15,9 +15,20 @@ namespace {
 constexpr const char* kNoTriangulation = "the straight-line morph uses no triangulation";
 constexpr const char* kRigidOnly = "only the rigid method factors out a rotation and follows a guide";
 
+// A rule with no value constraints yet (the kind's fields are set by the
+// callers below).
+MorphOptionRule base_rule(Option option, MethodSet methods, const char* why, OptionValueKind kind) {
+  MorphOptionRule rule;
+  rule.option = option;
+  rule.methods = methods;
+  rule.refused_because = why;
+  rule.kind = kind;
+  return rule;
+}
+
 MorphOptionRule count_rule(Option option, MethodSet methods, const char* why, long long least, long long most,
                            long long default_count) {
-  MorphOptionRule rule{option, methods, why, OptionValueKind::Count};
+  MorphOptionRule rule = base_rule(option, methods, why, OptionValueKind::Count);
   rule.least = least;
   rule.most = most;
   rule.default_count = default_count;
@@ -28,7 +39,7 @@ MorphOptionRule count_rule(Option option, MethodSet methods, const char* why, lo
 // here is one its parse function accepts.
 MorphOptionRule name_rule(Option option, MethodSet methods, const char* why, std::vector<std::string> choices,
                           std::string default_name) {
-  MorphOptionRule rule{option, methods, why, OptionValueKind::Name};
+  MorphOptionRule rule = base_rule(option, methods, why, OptionValueKind::Name);
   rule.choices = std::move(choices);
   rule.default_name = std::move(default_name);
   return rule;
@@ -67,7 +78,7 @@ const std::vector<MorphOptionRule>& morph_option_rules() {
                                morph_method_name(MorphMethod::Linear)},
                               morph_method_name(MorphMethod::Rigid)));
     // The triangulation's options, which the linear method would ignore.
-    MorphOptionRule verify{Option::Verify, triangulated, kNoTriangulation, OptionValueKind::Flag};
+    MorphOptionRule verify = base_rule(Option::Verify, triangulated, kNoTriangulation, OptionValueKind::Flag);
     verify.default_flag = true;
     rules.push_back(verify);
     rules.push_back(name_rule(Option::FrameCheck, triangulated, kNoTriangulation,
@@ -97,7 +108,7 @@ const std::vector<MorphOptionRule>& morph_option_rules() {
                               {correspondence_mode_name(CorrespondenceMode::ByIndex),
                                correspondence_mode_name(CorrespondenceMode::Auto)},
                               correspondence_mode_name(CorrespondenceMode::ByIndex)));
-    rules.push_back(MorphOptionRule{Option::Pins, kAllMethods, "", OptionValueKind::Pins});
+    rules.push_back(base_rule(Option::Pins, kAllMethods, "", OptionValueKind::Pins));
     return rules;
   }();
   return table;

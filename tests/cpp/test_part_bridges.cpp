@@ -70,7 +70,7 @@ void check_morph(const StickFigure& source, const StickFigure& target, MorphMeth
 
 TEST_CASE("bridge_parts joins a ring to the ring around it by a straight bridge", "[part_bridges]") {
   const StickFigure source = ring_in_ring(2), target = ring_in_ring(2.2, 0.2);
-  const BridgedFigures bridged = bridge_parts(source, decompose(source), target);
+  const BridgedFigures bridged = bridge_parts(CompatiblePair::check(source, target));
   check_bridged(bridged, source, target);
   CHECK(bridged.bridges == 1);
   CHECK(bridged.bends == 0);
@@ -81,7 +81,7 @@ TEST_CASE("bridge_parts bends a bridge where no straight one is valid in both", 
   // straight way to the outer vertex it faces in one figure is blocked by
   // the inner ring in the other.
   const StickFigure source = ring_in_ring(1.05), target = ring_in_ring(1.05, 0.9 * kPi);
-  const BridgedFigures bridged = bridge_parts(source, decompose(source), target);
+  const BridgedFigures bridged = bridge_parts(CompatiblePair::check(source, target));
   check_bridged(bridged, source, target);
   CHECK(bridged.bends > 0);
 }
@@ -99,7 +99,7 @@ TEST_CASE("bridge_parts joins lone vertices and nested parts into one tree", "[p
   std::vector<std::array<std::int64_t, 2>> edges;
   for (const Edge& e : source.edges) edges.push_back({e[0], e[1]});
   target = make_stick_figure(target.vertices, edges);
-  const BridgedFigures bridged = bridge_parts(source, decompose(source), target);
+  const BridgedFigures bridged = bridge_parts(CompatiblePair::check(source, target));
   check_bridged(bridged, source, target);
   CHECK(bridged.bridges == 7);
 }
@@ -214,7 +214,7 @@ TEST_CASE("bridges round a lone vertex keep their order in both figures", "[part
   // bridged figures then had other cyclic orders at vertex 1.
   const StickFigure source = figure({{327, -528}, {0, 0}, {8, -100}, {-1, 0}, {-4, 2}}, {});
   const StickFigure target = figure({{850, 729}, {0, 0}, {197, 47}, {-1, 7}, {5, 1}}, {});
-  const BridgedFigures bridged = bridge_parts(source, decompose(source), target);
+  const BridgedFigures bridged = bridge_parts(CompatiblePair::check(source, target));
   check_bridged(bridged, source, target);
   check_morph(source, target, MorphMethod::Rigid);
 }

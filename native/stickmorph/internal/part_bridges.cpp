@@ -229,9 +229,12 @@ double distance(const Vec2& a, const Vec2& b) { return std::hypot(a[0] - b[0], a
 
 }  // namespace
 
-BridgedFigures bridge_parts(const StickFigure& source, const Decomposition& dec, const StickFigure& target) {
-  const FigureParts parts = figure_parts(source);
-  const PartNesting nesting = part_nesting(source, dec, parts);
+BridgedFigures bridge_parts(const CompatiblePair& pair) {
+  const StickFigure& source = pair.source();
+  const StickFigure& target = pair.target();
+  const Decomposition& dec = pair.source_decomposition();
+  const FigureParts& parts = pair.figure_parts();
+  const PartNesting& nesting = pair.source_nesting();
   const int count = parts.count();
   Side sides[2] = {Side(source), Side(target)};
   BridgedFigures result;

@@ -39,12 +39,12 @@ struct BridgedFigures {
   int bends = 0;    ///< vertices added on them
 };
 
-/// Bridges the parts of two compatible figures (check_compatibility);
-/// `source_dec` is the source's decomposition. The corners are the
-/// source's: compatible figures have the same rotation systems, so a corner
-/// (vertex, next, previous) is the same corner in the target.
+/// Bridges the parts of a checked pair, by the parts and nesting its check
+/// found. The corners are the source's: compatible figures have the same
+/// rotation systems, so a corner (vertex, next, previous) is the same
+/// corner in the target.
 /// @throws VerificationError if rounding made a bridge invalid in exact
 ///         arithmetic (the bridged figures are checked exactly).
-BridgedFigures bridge_parts(const StickFigure& source, const Decomposition& source_dec, const StickFigure& target);
+BridgedFigures bridge_parts(const CompatiblePair& pair);
 
 }  // namespace stickmorph::internal
