@@ -9,35 +9,12 @@
 #include "stickmorph/internal/compact_lu.h"
 #include "stickmorph/internal/long_double_refinement.h"
 
+#include "chain_systems.h"
+
 using namespace stickmorph::internal;
+using namespace stickmorph::test;
 
 namespace {
-
-using SparseMatrix = Eigen::SparseMatrix<double>;
-
-// A 1D chain I - W with uneven weights (an M-matrix, the shape of the
-// morph's systems around a polyline); `phase` varies them.
-SparseMatrix chain_system(int m, double phase) {
-  std::vector<Eigen::Triplet<double>> triplets;
-  for (int i = 0; i < m; ++i) {
-    triplets.emplace_back(i, i, 1.0);
-    const double left = 0.5 + 0.4 * std::sin(phase + 0.9 * i);
-    if (i > 0) triplets.emplace_back(i, i - 1, -0.999 * left);
-    if (i + 1 < m) triplets.emplace_back(i, i + 1, -0.999 * (1 - left));
-  }
-  SparseMatrix a(m, m);
-  a.setFromTriplets(triplets.begin(), triplets.end());
-  a.makeCompressed();
-  return a;
-}
-
-CompactLU factors_of(const SparseMatrix& a) {
-  SymmetricOrderedLU lu;
-  lu.analyzePattern(a);
-  lu.factorize(a);
-  REQUIRE(lu.info() == Eigen::Success);
-  return CompactLU(lu);
-}
 
 LongMatrixX2 right_hand_side(int m) {
   LongMatrixX2 b(m, 2);

@@ -8,37 +8,10 @@
 #include "stickmorph/internal/compact_lu.h"
 #include "stickmorph/internal/preconditioned_gmres.h"
 
+#include "chain_systems.h"
+
 using namespace stickmorph::internal;
-
-namespace {
-
-using SparseMatrix = Eigen::SparseMatrix<double>;
-
-// A 1D chain I - W with uneven weights summing to `mass` (an M-matrix, the
-// shape of the morph's systems around a polyline); `phase` varies them.
-SparseMatrix chain_system(int m, double phase, double mass = 0.999) {
-  std::vector<Eigen::Triplet<double>> triplets;
-  for (int i = 0; i < m; ++i) {
-    triplets.emplace_back(i, i, 1.0);
-    const double left = 0.5 + 0.4 * std::sin(phase + 0.9 * i);
-    if (i > 0) triplets.emplace_back(i, i - 1, -mass * left);
-    if (i + 1 < m) triplets.emplace_back(i, i + 1, -mass * (1 - left));
-  }
-  SparseMatrix a(m, m);
-  a.setFromTriplets(triplets.begin(), triplets.end());
-  a.makeCompressed();
-  return a;
-}
-
-CompactLU factors_of(const SparseMatrix& a) {
-  SymmetricOrderedLU lu;
-  lu.analyzePattern(a);
-  lu.factorize(a);
-  REQUIRE(lu.info() == Eigen::Success);
-  return CompactLU(lu);
-}
-
-}  // namespace
+using namespace stickmorph::test;
 
 TEST_CASE("preconditioned_gmres: the matrix's own LU solves in one step", "[preconditioned_gmres]") {
   const SparseMatrix a = chain_system(200, 0.0);

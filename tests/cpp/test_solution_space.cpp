@@ -9,25 +9,12 @@
 
 #include "stickmorph/internal/solution_space.h"
 
+#include "chain_systems.h"
+
 using namespace stickmorph::internal;
+using namespace stickmorph::test;
 
 namespace {
-
-using SparseMatrix = Eigen::SparseMatrix<double>;
-
-SparseMatrix chain_system(int m, double phase) {
-  std::vector<Eigen::Triplet<double>> triplets;
-  for (int i = 0; i < m; ++i) {
-    triplets.emplace_back(i, i, 1.0);
-    const double left = 0.5 + 0.4 * std::sin(phase + 0.9 * i);
-    if (i > 0) triplets.emplace_back(i, i - 1, -0.999 * left);
-    if (i + 1 < m) triplets.emplace_back(i, i + 1, -0.999 * (1 - left));
-  }
-  SparseMatrix a(m, m);
-  a.setFromTriplets(triplets.begin(), triplets.end());
-  a.makeCompressed();
-  return a;
-}
 
 LongMatrixX2 right_hand_side(int m, double phase) {
   LongMatrixX2 b(m, 2);
