@@ -44,7 +44,7 @@ from .common import BakeSettings, StickMorphError, is_pin_group, next_pin_name, 
 from .native import load_engine, engine_limits, option_methods  # noqa: F401
 from .plane import PLANES, Plane, fit_plane, project, unproject, planarity_deviation  # noqa: F401
 from .correspondence import (  # noqa: F401
-    CORRESPONDENCES, Pin, Matching, edge_set, compare_edge_sets, figure_parts, parts_summary,
+    CORRESPONDENCES, Pin, Matching, compare_edge_sets, figure_parts, parts_summary,
     choose_correspondence, read_pins, check_pins, matched_heights, correspondence_summary,
 )
 from .timing import (  # noqa: F401

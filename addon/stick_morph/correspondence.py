@@ -50,27 +50,34 @@ class Matching:
 
 # ----------------------------------------------------------------- edges ----
 
-def edge_set(edges) -> set[tuple[int, int]]:
-    return {(min(a, b), max(a, b)) for a, b in np.asarray(edges, dtype=np.int64).reshape(-1, 2).tolist()}
+def _mesh_named(message: str, source_name: str, target_name: str) -> str:
+    """An engine message about the edge lists, with the meshes' names."""
+    return message.replace("source_edges", f"'{source_name}'").replace("target_edges", f"'{target_name}'")
 
 
 def compare_edge_sets(source_edges, target_edges, source_name: str = "source",
                       target_name: str = "target", limit: int = 5) -> str | None:
-    """None if both edge lists hold the same undirected edges, else a message."""
-    a, b = edge_set(source_edges), edge_set(target_edges)
-    if a == b:
+    """None if both edge lists hold the same undirected edges, else a message.
+    The comparison is the engine's (stickmorph.edge_set_difference, section
+    2.1's first test); the wording, with the mesh names, is the add-on's."""
+    engine = load_engine()
+    try:
+        only_source, only_target = engine.edge_set_difference(source_edges, target_edges)
+    except engine.StickMorphError as e:
+        raise StickMorphError(_mesh_named(str(e), source_name, target_name)) from e
+    if len(only_source) == 0 and len(only_target) == 0:
         return None
 
     def listing(edges):
-        items = sorted(edges)
+        items = [tuple(e) for e in edges.tolist()]
         text = ", ".join(f"{i}-{j}" for i, j in items[:limit])
         return text + (f" and {len(items) - limit} more" if len(items) > limit else "")
 
     parts = []
-    if a - b:
-        parts.append(f"edges only in '{source_name}': {listing(a - b)}")
-    if b - a:
-        parts.append(f"edges only in '{target_name}': {listing(b - a)}")
+    if len(only_source):
+        parts.append(f"edges only in '{source_name}': {listing(only_source)}")
+    if len(only_target):
+        parts.append(f"edges only in '{target_name}': {listing(only_target)}")
     return "the meshes have different edges (vertex i of one must be joined to the same " \
            "vertices as vertex i of the other): " + "; ".join(parts)
 
@@ -198,29 +205,38 @@ def _vertex_kind(degree: int) -> str:
 
 def check_pins(pins, source_edges, target_edges, source_count: int, target_count: int,
                source_name: str = "source", target_name: str = "target"):
-    """Refuses, naming the pin group, a pin whose vertex is not in its mesh or
-    that joins vertices of different kinds: the matching pairs an end or a
-    junction only with one of the same degree, and a vertex inside a stroke
-    (degree 2) only with another (the engine's rule; checked here so that
-    the message names the group, which the engine does not know)."""
+    """Refuses, naming the pin group, a pin the matching would refuse: the
+    engine's rule (stickmorph.check_pins: a vertex not in its mesh, pinned
+    twice, or a pin joining vertices of different kinds: an end or a
+    junction pairs only with one of the same degree, a vertex inside a
+    stroke only with another), worded with the group's and meshes' names,
+    which the engine does not know."""
     if not pins:
         return
-    degrees = []
-    for edges, count in ((source_edges, source_count), (target_edges, target_count)):
-        edges = np.asarray(edges, dtype=np.int64).reshape(-1, 2)
-        inside = edges[((edges >= 0) & (edges < count)).all(axis=1)]
-        degrees.append(np.bincount(inside.ravel(), minlength=count))
-    for pin in pins:
-        for vertex, count, mesh in ((pin.source, source_count, source_name), (pin.target, target_count, target_name)):
-            if not 0 <= vertex < count:
-                raise StickMorphError(f"the pin group '{pin.name}' names vertex {vertex} of '{mesh}', "
-                                      f"which has {count} vertices")
-        a, b = int(degrees[0][pin.source]), int(degrees[1][pin.target])
-        if a != b:
-            raise StickMorphError(
-                f"the pin '{pin.name}' joins vertex {pin.source} of '{source_name}', {_vertex_kind(a)}, to "
-                f"vertex {pin.target} of '{target_name}', {_vertex_kind(b)}: a pin joins two ends, two "
-                "junctions of the same degree or two vertices inside strokes")
+    engine = load_engine()
+    try:
+        problem = engine.check_pins(source_count, source_edges, target_count, target_edges,
+                                    [[pin.source, pin.target] for pin in pins])
+    except engine.StickMorphError as e:
+        raise StickMorphError(_mesh_named(str(e), source_name, target_name)) from e
+    if problem is None:
+        return
+    pin = pins[problem["pin"]]
+    defect = problem["defect"]
+    if defect in ("missing_source_vertex", "missing_target_vertex"):
+        vertex, count, mesh = ((pin.source, source_count, source_name) if defect == "missing_source_vertex"
+                               else (pin.target, target_count, target_name))
+        raise StickMorphError(f"the pin group '{pin.name}' names vertex {vertex} of '{mesh}', "
+                              f"which has {count} vertices")
+    if defect == "kinds_differ":
+        raise StickMorphError(
+            f"the pin '{pin.name}' joins vertex {pin.source} of '{source_name}', "
+            f"{_vertex_kind(problem['source_degree'])}, to vertex {pin.target} of '{target_name}', "
+            f"{_vertex_kind(problem['target_degree'])}: a pin joins two ends, two junctions of the same degree "
+            "or two vertices inside strokes")
+    # Pinned twice: read_pins refuses a vertex in two groups first; a caller
+    # with Pins of its own still gets the engine's reason.
+    raise StickMorphError(f"the pin '{pin.name}': {problem['reason']}")
 
 
 def matched_heights(heights, edges, vertex, edge, fraction) -> np.ndarray:

@@ -20,10 +20,55 @@
 
 namespace stickmorph::python {
 
-// conversions.cpp's edge-list conversion (shape, dtype and per-row messages
-// as every other binding's), declared here because conversions.h is shared
-// with bindings this change does not touch.
-std::vector<std::array<std::int64_t, 2>> to_edges(py::handle object, const std::string& name);
+namespace {
+
+// A graph's edge list (no positions: figure_parts, check_pins), each index
+// from 0 to vertex_count - 1; `name` names the list in messages.
+std::vector<sm::Edge> graph_edges(long long vertex_count, const py::object& edges, const std::string& name) {
+  const std::vector<std::array<std::int64_t, 2>> indices = to_edges(edges, name);
+  const std::string row = name == "edges" ? std::string("edge ") : name + ": edge ";
+  std::vector<sm::Edge> result;
+  result.reserve(indices.size());
+  for (std::size_t i = 0; i < indices.size(); ++i) {
+    for (const std::int64_t v : indices[i])
+      if (v < 0 || v >= vertex_count)
+        throw sm::InvalidArgumentError(row + std::to_string(i) + " names vertex " + std::to_string(v) +
+                                       ", but there are " + std::to_string(vertex_count) + " vertices");
+    result.push_back({int(indices[i][0]), int(indices[i][1])});
+  }
+  return result;
+}
+
+long long checked_vertex_count(long long vertex_count, const std::string& name) {
+  if (vertex_count < 0 || vertex_count > INT_MAX)
+    throw sm::InvalidArgumentError(name + " must be from 0 to " + std::to_string(INT_MAX) + ", got " +
+                                   std::to_string(vertex_count));
+  return vertex_count;
+}
+
+// Vertex degrees of a graph, for the pin rule.
+std::vector<int> degrees(long long vertex_count, const std::vector<sm::Edge>& edges) {
+  std::vector<int> degree(std::size_t(vertex_count), 0);
+  for (const sm::Edge& e : edges) {
+    ++degree[std::size_t(e[0])];
+    ++degree[std::size_t(e[1])];
+  }
+  return degree;
+}
+
+const char* pin_defect_name(sm::PinDefect defect) {
+  switch (defect) {
+    case sm::PinDefect::None: return "none";
+    case sm::PinDefect::MissingSourceVertex: return "missing_source_vertex";
+    case sm::PinDefect::MissingTargetVertex: return "missing_target_vertex";
+    case sm::PinDefect::SourcePinnedTwice: return "source_pinned_twice";
+    case sm::PinDefect::TargetPinnedTwice: return "target_pinned_twice";
+    case sm::PinDefect::KindsDiffer: return "kinds_differ";
+  }
+  return "none";
+}
+
+}  // namespace
 
 void bind_figures(py::module_& m) {
   py::class_<sm::CompatibilityReport>(m, "CompatibilityReport",
@@ -321,21 +366,12 @@ Raises:
   m.def(
       "figure_parts",
       [](long long vertex_count, const py::object& edges) {
-        if (vertex_count < 0 || vertex_count > INT_MAX)
-          throw sm::InvalidArgumentError("vertex_count must be from 0 to " + std::to_string(INT_MAX) + ", got " +
-                                         std::to_string(vertex_count));
-        const std::vector<std::array<std::int64_t, 2>> indices = to_edges(edges, "edges");
+        checked_vertex_count(vertex_count, "vertex_count");
         // Only the vertex count and the edges matter to the parts: the
         // positions stay zero and the figure is not validated.
         sm::StickFigure figure;
         figure.vertices.assign(std::size_t(vertex_count), sm::Vec2{0.0, 0.0});
-        for (std::size_t i = 0; i < indices.size(); ++i) {
-          for (const std::int64_t v : indices[i])
-            if (v < 0 || v >= vertex_count)
-              throw sm::InvalidArgumentError("edge " + std::to_string(i) + " names vertex " + std::to_string(v) +
-                                             ", but there are " + std::to_string(vertex_count) + " vertices");
-          figure.edges.push_back({int(indices[i][0]), int(indices[i][1])});
-        }
+        figure.edges = graph_edges(vertex_count, edges, "edges");
         const sm::FigureParts parts = sm::figure_parts(figure);
         py::list result;
         for (const std::vector<int>& part : parts.vertices) result.append(to_list(part));
@@ -360,6 +396,92 @@ Returns:
 Raises:
   InvalidArgumentError: a negative vertex_count, an edge naming a vertex
     outside 0..vertex_count-1, or an array of the wrong shape or type.)doc");
+
+  // The engine's edge-set comparison (section 2.1's first test), for callers
+  // that word their own message before any figure exists: the add-on.
+  m.def(
+      "edge_set_difference",
+      [](const py::object& source_edges, const py::object& target_edges) {
+        auto as_edges = [](const py::object& edges, const std::string& name) {
+          std::vector<sm::Edge> result;
+          const std::vector<std::array<std::int64_t, 2>> indices = to_edges(edges, name);
+          for (std::size_t i = 0; i < indices.size(); ++i) {
+            for (const std::int64_t v : indices[i])
+              if (v < 0 || v > INT_MAX)
+                throw sm::InvalidArgumentError(name + ": edge " + std::to_string(i) + " names vertex " +
+                                               std::to_string(v) + ", not a vertex index");
+            result.push_back({int(indices[i][0]), int(indices[i][1])});
+          }
+          return result;
+        };
+        const sm::EdgeSetDifference difference =
+            sm::edge_set_difference(as_edges(source_edges, "source_edges"), as_edges(target_edges, "target_edges"));
+        return py::make_tuple(to_edge_array(difference.only_in_source), to_edge_array(difference.only_in_target));
+      },
+      py::arg("source_edges"), py::arg("target_edges"),
+      R"doc(The undirected edges that only one of two edge lists has.
+
+Compatible figures (paper, section 2.1) have the same edges, whatever their
+order and direction: this is check_compatibility's first test, without the
+figures.
+
+Args:
+  source_edges, target_edges: #E by 2 integer array-like of vertex indices
+    (0 or more).
+
+Returns:
+  (only_in_source, only_in_target): two #A by 2 int64 arrays of edges (i, j)
+  with i < j, sorted; both empty iff the lists hold the same edges.
+
+Raises:
+  InvalidArgumentError: a negative index, or an array of the wrong shape or
+    type.)doc");
+
+  // The engine's pin rule (figure_correspondence.h's check_vertex_pins), for
+  // callers that name pins their own way: the add-on's pin groups.
+  m.def(
+      "check_pins",
+      [](long long source_vertex_count, const py::object& source_edges, long long target_vertex_count,
+         const py::object& target_edges, const py::object& pins) -> py::object {
+        checked_vertex_count(source_vertex_count, "source_vertex_count");
+        checked_vertex_count(target_vertex_count, "target_vertex_count");
+        const std::vector<int> source_degree =
+            degrees(source_vertex_count, graph_edges(source_vertex_count, source_edges, "source_edges"));
+        const std::vector<int> target_degree =
+            degrees(target_vertex_count, graph_edges(target_vertex_count, target_edges, "target_edges"));
+        const sm::PinCheck check = sm::check_vertex_pins(source_degree, target_degree, to_pins(pins));
+        if (check.ok()) return py::none();
+        py::dict problem;
+        problem["pin"] = check.pin;
+        problem["defect"] = pin_defect_name(check.defect);
+        problem["source_degree"] = check.source_degree;
+        problem["target_degree"] = check.target_degree;
+        problem["reason"] = check.reason;
+        return std::move(problem);
+      },
+      py::arg("source_vertex_count"), py::arg("source_edges"), py::arg("target_vertex_count"),
+      py::arg("target_edges"), py::arg("pins"),
+      R"doc(The first pin that correspond (and morph with correspond='auto') would refuse, or None.
+
+The rule: each pin names a vertex of each figure, no vertex is pinned
+twice, and a pin joins two ends, two junctions of the same degree or two
+vertices inside strokes. Only the vertex counts and the edges matter.
+
+Args:
+  source_vertex_count, target_vertex_count: int, the figures' vertex counts.
+  source_edges, target_edges: #E by 2 integer array-like of vertex indices.
+  pins: #P by 2 integer array-like of (source vertex, target vertex).
+
+Returns:
+  None, or a dict: "pin" (its index in pins), "defect"
+  ('missing_source_vertex', 'missing_target_vertex', 'source_pinned_twice',
+  'target_pinned_twice' or 'kinds_differ'), "source_degree" and
+  "target_degree" (for 'kinds_differ'), "reason" (as correspond's error
+  says it).
+
+Raises:
+  InvalidArgumentError: a negative vertex count, an edge naming a vertex
+    outside its figure, or an array of the wrong shape or type.)doc");
 }
 
 }  // namespace stickmorph::python

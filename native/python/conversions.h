@@ -46,6 +46,10 @@ py::array_t<std::int64_t> to_int64_array(const std::vector<Int>& values) {
 /// An (n, 2) real array-like as positions; `name` names it in messages.
 std::vector<sm::Vec2> to_vertices(py::handle object, const std::string& name);
 
+/// An (n, 2) integer array-like as index pairs, not checked against any
+/// vertex count; `name` names it in messages ("edges": "edge i").
+std::vector<std::array<std::int64_t, 2>> to_edges(py::handle object, const std::string& name);
+
 /// #P by 2 vertex pairs (source, target) for correspond=; None gives none.
 std::vector<sm::VertexPin> to_pins(const py::object& object);
 

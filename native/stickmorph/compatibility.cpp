@@ -3,6 +3,7 @@
 #include "stickmorph/internal/stage_counters.h"
 
 #include <algorithm>
+#include <iterator>
 #include <set>
 #include <utility>
 
@@ -83,10 +84,13 @@ CompatibilityReport incompatible(Incompatibility kind, std::string reason, std::
   return report;
 }
 
-std::set<DirectedEdge> undirected_set(const StickFigure& figure) {
-  std::set<DirectedEdge> edges;
-  for (const Edge& e : figure.edges) edges.emplace(std::min(e[0], e[1]), std::max(e[0], e[1]));
-  return edges;
+std::vector<Edge> undirected_sorted(const std::vector<Edge>& edges) {
+  std::vector<Edge> result;
+  result.reserve(edges.size());
+  for (const Edge& e : edges) result.push_back({std::min(e[0], e[1]), std::max(e[0], e[1])});
+  std::sort(result.begin(), result.end());
+  result.erase(std::unique(result.begin(), result.end()), result.end());
+  return result;
 }
 
 // check_compatibility, also giving the parts and the source's nesting it
@@ -103,21 +107,21 @@ CompatibilityReport compare_figures(const StickFigure& source, const Decompositi
                         {});
 
   // Section 2.1 compares figures whose vertices correspond; their edges must
-  // correspond too.
-  const std::set<DirectedEdge> source_edges = undirected_set(source);
-  const std::set<DirectedEdge> target_edges = undirected_set(target);
-  for (const Edge& e : source.edges)
-    if (!target_edges.count({std::min(e[0], e[1]), std::max(e[0], e[1])}))
-      return incompatible(Incompatibility::EdgeSetDiffers,
-                          "edge " + describe_edge(source, find_edge(source, e[0], e[1])) +
-                              " of the source is not an edge of the target",
-                          {e[0], e[1]});
-  for (const Edge& e : target.edges)
-    if (!source_edges.count({std::min(e[0], e[1]), std::max(e[0], e[1])}))
-      return incompatible(Incompatibility::EdgeSetDiffers,
-                          "edge " + describe_edge(target, find_edge(target, e[0], e[1])) +
-                              " of the target is not an edge of the source",
-                          {e[0], e[1]});
+  // correspond too. The first edge of either list (in its own order) that
+  // the other lacks is named.
+  const EdgeSetDifference difference = edge_set_difference(source.edges, target.edges);
+  if (!difference.empty()) {
+    const bool in_source = !difference.only_in_source.empty();
+    const StickFigure& figure = in_source ? source : target;
+    const std::vector<Edge>& only = in_source ? difference.only_in_source : difference.only_in_target;
+    for (const Edge& e : figure.edges)
+      if (std::binary_search(only.begin(), only.end(), Edge{std::min(e[0], e[1]), std::max(e[0], e[1])}))
+        return incompatible(Incompatibility::EdgeSetDiffers,
+                            "edge " + describe_edge(figure, find_edge(figure, e[0], e[1])) +
+                                (in_source ? " of the source is not an edge of the target"
+                                           : " of the target is not an edge of the source"),
+                            {e[0], e[1]});
+  }
 
   // Isomorphic cyclic sequences under the correspondence <=> every vertex sees
   // its neighbours in the same cyclic order (the sequences are traced from
@@ -232,6 +236,14 @@ CompatibilityReport compare_figures(const StickFigure& source, const Decompositi
 }
 
 }  // namespace
+
+EdgeSetDifference edge_set_difference(const std::vector<Edge>& source, const std::vector<Edge>& target) {
+  const std::vector<Edge> a = undirected_sorted(source), b = undirected_sorted(target);
+  EdgeSetDifference difference;
+  std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(difference.only_in_source));
+  std::set_difference(b.begin(), b.end(), a.begin(), a.end(), std::back_inserter(difference.only_in_target));
+  return difference;
+}
 
 CompatibilityReport check_compatibility(const StickFigure& source, const Decomposition& source_dec,
                                         const StickFigure& target, const Decomposition& target_dec) {

@@ -45,6 +45,16 @@ struct CompatibilityReport {
   bool compatible() const { return kind == Incompatibility::None; }
 };
 
+/// The undirected edges (i < j, sorted) that only one of two edge lists
+/// has. Section 2.1 compares figures whose vertices correspond, so their
+/// edges must be the same set: check_compatibility's first test, and the
+/// Blender add-on's early message (stickmorph.edge_set_difference).
+struct EdgeSetDifference {
+  std::vector<Edge> only_in_source, only_in_target;
+  bool empty() const { return only_in_source.empty() && only_in_target.empty(); }
+};
+EdgeSetDifference edge_set_difference(const std::vector<Edge>& source, const std::vector<Edge>& target);
+
 /// Decides compatibility of two valid figures whose vertices correspond by
 /// index. Edge order and direction in the two edge lists may differ.
 CompatibilityReport check_compatibility(const StickFigure& source, const StickFigure& target);

@@ -63,6 +63,34 @@ struct VertexPin {
   int target = -1;
 };
 
+/// What breaks the pin rules (correspond_figures refuses it).
+enum class PinDefect {
+  None,
+  MissingSourceVertex,  ///< the source has no such vertex
+  MissingTargetVertex,  ///< the target has no such vertex
+  SourcePinnedTwice,    ///< a source vertex in two pins
+  TargetPinnedTwice,    ///< a target vertex in two pins
+  KindsDiffer,          ///< a node (end, junction) and a vertex inside a stroke, or nodes of different degrees
+};
+
+/// The first pin that breaks the rules, and why.
+struct PinCheck {
+  PinDefect defect = PinDefect::None;
+  int pin = -1;                               ///< its index in the list
+  int source_degree = 0, target_degree = 0;  ///< KindsDiffer: the two vertices' degrees
+  std::string reason;                         ///< "pin S:T ...", as correspond's error says it
+  bool ok() const { return defect == PinDefect::None; }
+};
+
+/// The pin rules, in one place: each pin names a vertex of each figure, no
+/// vertex is pinned twice, and a pin joins two ends, two junctions of the
+/// same degree or two vertices inside strokes (a skeleton isomorphism maps
+/// nodes to nodes of the same degree, section 2.1). `source_degree` and
+/// `target_degree` are #V lists of vertex degrees. Pins are checked in
+/// order, the first problem reported.
+PinCheck check_vertex_pins(const std::vector<int>& source_degree, const std::vector<int>& target_degree,
+                           const std::vector<VertexPin>& pins);
+
 /// "3:7" -> {3, 7}. @throws InvalidArgumentError quoting the text.
 VertexPin parse_vertex_pin(const std::string& text);
 

@@ -6,33 +6,58 @@
 
 #include "stickmorph/errors.h"
 
-namespace stickmorph::internal {
+namespace stickmorph {
 
-void check_pins(const std::vector<int>& source_degree, const std::vector<int>& target_degree,
-                const std::vector<VertexPin>& pins) {
+// The public rule (figure_correspondence.h), here with the other pin stage.
+PinCheck check_vertex_pins(const std::vector<int>& source_degree, const std::vector<int>& target_degree,
+                           const std::vector<VertexPin>& pins) {
   const int ns = int(source_degree.size()), nt = int(target_degree.size());
-  std::vector<int> source_seen(std::size_t(ns), -1), target_seen(std::size_t(nt), -1);
+  std::vector<bool> source_seen(std::size_t(ns), false), target_seen(std::size_t(nt), false);
+  PinCheck check;
+  auto refuse = [&](PinDefect defect, int k, std::string reason) {
+    check.defect = defect;
+    check.pin = k;
+    check.reason = std::move(reason);
+    return check;
+  };
   for (std::size_t k = 0; k < pins.size(); ++k) {
     const VertexPin& pin = pins[k];
     const std::string name = "pin " + std::to_string(pin.source) + ":" + std::to_string(pin.target);
     if (pin.source < 0 || pin.source >= ns)
-      throw InvalidArgumentError("correspond: " + name + ": the source has no vertex " + std::to_string(pin.source) +
-                                 " (it has " + plural(ns, "vertex", "vertices") + ")");
+      return refuse(PinDefect::MissingSourceVertex, int(k),
+                    name + ": the source has no vertex " + std::to_string(pin.source) + " (it has " +
+                        internal::plural(ns, "vertex", "vertices") + ")");
     if (pin.target < 0 || pin.target >= nt)
-      throw InvalidArgumentError("correspond: " + name + ": the target has no vertex " + std::to_string(pin.target) +
-                                 " (it has " + plural(nt, "vertex", "vertices") + ")");
-    if (source_seen[std::size_t(pin.source)] >= 0)
-      throw InvalidArgumentError("correspond: source vertex " + std::to_string(pin.source) + " is pinned twice");
-    if (target_seen[std::size_t(pin.target)] >= 0)
-      throw InvalidArgumentError("correspond: target vertex " + std::to_string(pin.target) + " is pinned twice");
-    source_seen[std::size_t(pin.source)] = target_seen[std::size_t(pin.target)] = int(k);
+      return refuse(PinDefect::MissingTargetVertex, int(k),
+                    name + ": the target has no vertex " + std::to_string(pin.target) + " (it has " +
+                        internal::plural(nt, "vertex", "vertices") + ")");
+    if (source_seen[std::size_t(pin.source)])
+      return refuse(PinDefect::SourcePinnedTwice, int(k),
+                    "source vertex " + std::to_string(pin.source) + " is pinned twice");
+    if (target_seen[std::size_t(pin.target)])
+      return refuse(PinDefect::TargetPinnedTwice, int(k),
+                    "target vertex " + std::to_string(pin.target) + " is pinned twice");
+    source_seen[std::size_t(pin.source)] = target_seen[std::size_t(pin.target)] = true;
     const int ds = source_degree[std::size_t(pin.source)], dt = target_degree[std::size_t(pin.target)];
-    if ((ds == 2) != (dt == 2) || (ds != 2 && ds != dt))
-      throw InvalidArgumentError("correspond: " + name + " joins a vertex of degree " + std::to_string(ds) +
-                                 " to one of degree " + std::to_string(dt) +
-                                 " (a junction or end matches only one of the same degree, a vertex inside a "
-                                 "stroke only one inside a stroke)");
+    if ((ds == 2) != (dt == 2) || (ds != 2 && ds != dt)) {
+      check.source_degree = ds;
+      check.target_degree = dt;
+      return refuse(PinDefect::KindsDiffer, int(k),
+                    name + " joins a vertex of degree " + std::to_string(ds) + " to one of degree " +
+                        std::to_string(dt) +
+                        " (a junction or end matches only one of the same degree, a vertex inside a "
+                        "stroke only one inside a stroke)");
+    }
   }
+  return check;
+}
+
+namespace internal {
+
+void check_pins(const std::vector<int>& source_degree, const std::vector<int>& target_degree,
+                const std::vector<VertexPin>& pins) {
+  const PinCheck check = check_vertex_pins(source_degree, target_degree, pins);
+  if (!check.ok()) throw InvalidArgumentError("correspond: " + check.reason);
 }
 
 void classify_pins(const Skeleton& source, const Skeleton& target, const std::vector<VertexPin>& pins,
@@ -73,4 +98,5 @@ std::optional<ParameterMap> chain_map(const std::vector<PinPlace>& pins, int sou
   return map;
 }
 
-}  // namespace stickmorph::internal
+}  // namespace internal
+}  // namespace stickmorph
