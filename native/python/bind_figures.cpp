@@ -367,12 +367,9 @@ Raises:
       "figure_parts",
       [](long long vertex_count, const py::object& edges) {
         checked_vertex_count(vertex_count, "vertex_count");
-        // Only the vertex count and the edges matter to the parts: the
-        // positions stay zero and the figure is not validated.
-        sm::StickFigure figure;
-        figure.vertices.assign(std::size_t(vertex_count), sm::Vec2{0.0, 0.0});
-        figure.edges = graph_edges(vertex_count, edges, "edges");
-        const sm::FigureParts parts = sm::figure_parts(figure);
+        // Only the vertex count and the edges matter to the parts: no figure
+        // (no positions) is made.
+        const sm::FigureParts parts = sm::figure_parts(int(vertex_count), graph_edges(vertex_count, edges, "edges"));
         py::list result;
         for (const std::vector<int>& part : parts.vertices) result.append(to_list(part));
         return result;

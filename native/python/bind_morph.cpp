@@ -20,7 +20,6 @@
 #include "stickmorph/decomposition.h"
 #include "stickmorph/errors.h"
 #include "stickmorph/frame_verification.h"
-#include "stickmorph/internal/morph_topology.h"  // build_topology: the form check of a triangulation
 #include "stickmorph/morph_solver.h"
 #include "stickmorph/working_scale.h"
 #include "stickmorph/morph_stick_figures.h"
@@ -362,7 +361,7 @@ without the GIL.)doc")
                // The engine's form check before the first n positions are
                // read as a figure: it names what is malformed.
                py::gil_scoped_release release;
-               sm::internal::build_topology(tri);
+               sm::check_morph_triangulation(tri);
              }
              const std::vector<sm::Vec2> figure(tri.source.begin(), tri.source.begin() + tri.figure_vertices);
              sm::StickFigure source = make_figure(to_point_array(figure), edges, "triangulation['source']", "edges");

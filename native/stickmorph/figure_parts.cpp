@@ -32,15 +32,17 @@ int winding_number(const StickFigure& figure, const std::vector<int>& darts, con
 
 }  // namespace
 
-FigureParts figure_parts(const StickFigure& figure) {
-  const std::size_t n = figure.vertices.size();
+FigureParts figure_parts(const StickFigure& figure) { return figure_parts(int(figure.vertices.size()), figure.edges); }
+
+FigureParts figure_parts(int vertex_count, const std::vector<Edge>& edges) {
+  const std::size_t n = std::size_t(vertex_count);
   std::vector<int> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
   auto find = [&](int v) {
     while (parent[std::size_t(v)] != v) v = parent[std::size_t(v)] = parent[std::size_t(parent[std::size_t(v)])];
     return v;
   };
-  for (const Edge& e : figure.edges) {
+  for (const Edge& e : edges) {
     const int a = find(e[0]), b = find(e[1]);
     // The smaller root wins, so each root is its part's smallest vertex.
     if (a != b) parent[std::size_t(std::max(a, b))] = std::min(a, b);

@@ -32,6 +32,9 @@ struct FigureParts {
 
 /// The parts of `figure` (union-find on its edges). Linear time.
 FigureParts figure_parts(const StickFigure& figure);
+/// The same for any graph on vertex_count vertices (positions play no
+/// part): every index of `edges` must be in 0..vertex_count-1.
+FigureParts figure_parts(int vertex_count, const std::vector<Edge>& edges);
 
 /// The bounded faces that hold each part.
 struct PartNesting {

@@ -553,4 +553,8 @@ bool MorphSolver::last_solve_factorized() const { return state_->last_factorized
 
 const MorphSolverStats& MorphSolver::stats() const { return state_->stats; }
 
+void check_morph_triangulation(const FigureTriangulation& triangulation) {
+  (void)internal::build_topology(triangulation);
+}
+
 }  // namespace stickmorph

@@ -33,6 +33,14 @@
 
 namespace stickmorph {
 
+/// The form check a MorphSolver starts with (morph_topology.h): a
+/// triangulation of a disk bounded by its enclosure, every node's fan
+/// whole. For callers that read the first figure_vertices nodes as a figure
+/// before making a solver (stickmorph.MorphSolver): the message names what
+/// is malformed instead of a figure error it would cause.
+/// @throws InvalidArgumentError naming the node, triangle or side.
+void check_morph_triangulation(const FigureTriangulation& triangulation);
+
 /// What a MorphSolver spent, accumulated over its life.
 struct MorphSolverStats {
   double factorize_ms = 0;  ///< numeric LU factorizations (and blending the matrix for them), the moment space

@@ -42,6 +42,11 @@ TEST_CASE("figure_parts numbers the parts by their smallest vertex", "[figure_pa
   CHECK(describe_part(parts, 1) == "part 1 (vertex 1)");
   CHECK(describe_part(parts, 2) == "part 2 (vertices 2, 4)");
   CHECK(figure_parts(polygon(regular(5))).count() == 1);
+  // The graph alone (no positions) gives the same parts.
+  const FigureParts of_graph = figure_parts(5, f.edges);
+  CHECK(of_graph.part_of_vertex == parts.part_of_vertex);
+  CHECK(of_graph.vertices == parts.vertices);
+  CHECK(figure_parts(0, {}).count() == 0);
 }
 
 TEST_CASE("decompose gives every part its own exterior sequence", "[figure_parts][decompose]") {
