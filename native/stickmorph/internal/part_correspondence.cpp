@@ -3,10 +3,8 @@
 #include "stickmorph/internal/part_correspondence.h"
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
-#include <cstdint>
 #include <numeric>
 #include <string>
 #include <utility>
@@ -20,45 +18,11 @@
 #include "stickmorph/internal/correspondence_skeleton.h"
 #include "stickmorph/internal/correspondence_track.h"
 #include "stickmorph/internal/least_cost_assignment.h"
+#include "stickmorph/internal/matched_parts.h"
 
 namespace stickmorph::internal {
 
 namespace {
-
-// One part as a figure of its own, with the way back to the whole figure.
-struct PartFigure {
-  StickFigure figure;
-  std::vector<int> global_vertex;  // local vertex -> figure vertex
-  std::vector<int> global_edge;    // local edge -> figure edge
-};
-
-// Part `part` of a valid figure as a figure of its own. Valid by
-// construction, so built without make_stick_figure's checks: its vertices
-// are some of the whole figure's, at the same coordinates, and its edges are
-// all the whole figure's edges between them (a part is a connected
-// component, so an edge with one end in it has both); a subset of the
-// vertices and edges of a plane graph with no coincident vertices, no
-// duplicate edges and no crossings has none either.
-PartFigure part_figure(const StickFigure& whole, const FigureParts& parts, int part) {
-  PartFigure result;
-  result.global_vertex = parts.vertices[std::size_t(part)];
-  std::vector<int> local(whole.vertices.size(), -1);
-  std::vector<Vec2> vertices;
-  for (std::size_t k = 0; k < result.global_vertex.size(); ++k) {
-    local[std::size_t(result.global_vertex[k])] = int(k);
-    vertices.push_back(whole.vertices[std::size_t(result.global_vertex[k])]);
-  }
-  // Same order and direction as in the whole figure, so that a dummy's
-  // fraction along its edge means the same in both.
-  std::vector<Edge> edges;
-  for (std::size_t e = 0; e < whole.edges.size(); ++e)
-    if (local[std::size_t(whole.edges[e][0])] >= 0) {
-      edges.push_back({local[std::size_t(whole.edges[e][0])], local[std::size_t(whole.edges[e][1])]});
-      result.global_edge.push_back(int(e));
-    }
-  result.figure = StickFigure{std::move(vertices), std::move(edges), whole.name};
-  return result;
-}
 
 // What a matching of two parts needs (compare_invariants): the number of
 // independent cycles and the degrees of the nodes (vertices of degree
@@ -128,6 +92,31 @@ std::vector<PartPlace> part_places(const StickFigure& whole, const FigureParts& 
   return places;
 }
 
+// What each part holds: its shape with the sorted contents of the parts
+// directly inside it, recursively, so that a square holding a triangle is
+// never paired with an empty hexagon (its triangle would have nowhere to
+// go). Parts that may be paired have equal texts.
+std::vector<std::string> nesting_contents(const std::vector<PartShape>& shapes, const PartNesting& nesting) {
+  const std::size_t count = shapes.size();
+  std::vector<std::string> text(count);
+  std::vector<std::size_t> order(count);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return nesting.enclosing[a].size() > nesting.enclosing[b].size();
+  });
+  std::vector<std::vector<std::string>> inside(count);
+  for (std::size_t part : order) {  // the deepest first
+    std::sort(inside[part].begin(), inside[part].end());
+    std::string t = std::to_string(shapes[part].cycles) + ":";
+    for (int d : shapes[part].node_degrees) t += std::to_string(d) + ",";
+    t += "(";
+    for (const std::string& child : inside[part]) t += child + ";";
+    text[part] = t + ")";
+    if (nesting.parent_part[part] >= 0) inside[std::size_t(nesting.parent_part[part])].push_back(text[part]);
+  }
+  return text;
+}
+
 std::string without_prefix(const std::string& text, const std::string& prefix) {
   return text.compare(0, prefix.size(), prefix) == 0 ? text.substr(prefix.size()) : text;
 }
@@ -150,7 +139,6 @@ FigureCorrespondence correspond_parts(const StickFigure& source, const StickFigu
   if (target_parts.count() != k)
     topology_differs("the source has " + plural(k, "part", "parts") + " and the target " +
                      std::to_string(target_parts.count()) + " (parts are the connected pieces of a figure)");
-  const int ns = int(source.vertices.size());
 
   std::vector<PartFigure> source_pieces, target_pieces;
   std::vector<PartShape> source_shapes, target_shapes;
@@ -163,32 +151,8 @@ FigureCorrespondence correspond_parts(const StickFigure& source, const StickFigu
   // Nesting depth: how many parts enclose a part. Matched parts must agree.
   const PartNesting source_nesting = part_nesting(source, decompose(source), source_parts);
   const PartNesting target_nesting = part_nesting(target, decompose(target), target_parts);
-  // And what they hold: a part's shape with the sorted contents of the
-  // parts directly inside it, recursively, so that a square holding a
-  // triangle is never paired with an empty hexagon (its triangle would have
-  // nowhere to go).
-  auto contents = [](const std::vector<PartShape>& shapes, const PartNesting& nesting) {
-    const std::size_t count = shapes.size();
-    std::vector<std::string> text(count);
-    std::vector<std::size_t> order(count);
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return nesting.enclosing[a].size() > nesting.enclosing[b].size();
-    });
-    std::vector<std::vector<std::string>> inside(count);
-    for (std::size_t part : order) {  // the deepest first
-      std::sort(inside[part].begin(), inside[part].end());
-      std::string t = std::to_string(shapes[part].cycles) + ":";
-      for (int d : shapes[part].node_degrees) t += std::to_string(d) + ",";
-      t += "(";
-      for (const std::string& child : inside[part]) t += child + ";";
-      text[part] = t + ")";
-      if (nesting.parent_part[part] >= 0) inside[std::size_t(nesting.parent_part[part])].push_back(text[part]);
-    }
-    return text;
-  };
-  const std::vector<std::string> source_contents = contents(source_shapes, source_nesting);
-  const std::vector<std::string> target_contents = contents(target_shapes, target_nesting);
+  const std::vector<std::string> source_contents = nesting_contents(source_shapes, source_nesting);
+  const std::vector<std::string> target_contents = nesting_contents(target_shapes, target_nesting);
 
   // Pins pair parts.
   std::vector<int> forced(std::size_t(k), -1), forced_by(std::size_t(k), -1);
@@ -348,89 +312,10 @@ FigureCorrespondence correspond_parts(const StickFigure& source, const StickFigu
   }
 
   // Each pair matched on its own, charged from the whole figure's rotation.
-  FigureCorrespondence result;
-  std::size_t largest = 0;
-  double weight = 0;
-  for (int a = 0; a < k; ++a) {
+  for (int a = 0; a < k; ++a)
     if (!done[std::size_t(a)]) match_pair(a, partner[std::size_t(a)], rotation);
-    const FigureCorrespondence& m = matched[std::size_t(a)];
-    const PartFigure& sp = source_pieces[std::size_t(a)];
-    result.skeleton_nodes += m.skeleton_nodes;
-    result.skeleton_chains += m.skeleton_chains;
-    result.candidates += m.candidates;
-    // The residual of the whole: the parts' residuals weighted by their
-    // matched vertices.
-    result.residual += m.residual * double(m.source_places.size());
-    weight += double(m.source_places.size());
-    if (sp.figure.vertices.size() > largest) {
-      largest = sp.figure.vertices.size();
-      result.rotation_degrees = m.rotation_degrees;
-    }
-  }
-  if (weight > 0) result.residual /= weight;
-
-  // Put together: the source's vertices keep their numbers; the dummies of
-  // every part follow, ordered by the target vertex they stand for.
-  std::vector<std::pair<int, std::pair<int, int>>> dummies;  // (target vertex, (part, local matched index))
-  for (int a = 0; a < k; ++a) {
-    const FigureCorrespondence& m = matched[std::size_t(a)];
-    const PartFigure& tp = target_pieces[std::size_t(partner[std::size_t(a)])];
-    for (std::size_t i = source_pieces[std::size_t(a)].global_vertex.size(); i < m.source_places.size(); ++i)
-      dummies.push_back({tp.global_vertex[std::size_t(m.target_places[i].vertex)], {a, int(i)}});
-  }
-  std::sort(dummies.begin(), dummies.end());
-  std::vector<std::vector<int>> global_index(static_cast<std::size_t>(k));
-  for (int a = 0; a < k; ++a) {
-    global_index[std::size_t(a)] = source_pieces[std::size_t(a)].global_vertex;
-    global_index[std::size_t(a)].resize(matched[std::size_t(a)].source_places.size(), -1);
-  }
-  for (std::size_t d = 0; d < dummies.size(); ++d)
-    global_index[std::size_t(dummies[d].second.first)][std::size_t(dummies[d].second.second)] = ns + int(d);
-  const std::size_t m_total = std::size_t(ns) + dummies.size();
-  std::vector<Vec2> source_positions(m_total), target_positions(m_total);
-  result.source_places.resize(m_total);
-  result.target_places.resize(m_total);
-  std::vector<std::array<std::int64_t, 2>> edges;
-  auto globalise = [](MatchedPlace place, const PartFigure& piece) {
-    if (place.vertex >= 0) place.vertex = piece.global_vertex[std::size_t(place.vertex)];
-    if (place.edge >= 0) place.edge = piece.global_edge[std::size_t(place.edge)];
-    return place;
-  };
-  for (int a = 0; a < k; ++a) {
-    const FigureCorrespondence& m = matched[std::size_t(a)];
-    const PartFigure& sp = source_pieces[std::size_t(a)];
-    const PartFigure& tp = target_pieces[std::size_t(partner[std::size_t(a)])];
-    const std::vector<int>& index = global_index[std::size_t(a)];
-    for (std::size_t i = 0; i < m.source_places.size(); ++i) {
-      const std::size_t g = std::size_t(index[i]);
-      source_positions[g] = m.source.vertices[i];
-      target_positions[g] = m.target.vertices[i];
-      result.source_places[g] = globalise(m.source_places[i], sp);
-      result.target_places[g] = globalise(m.target_places[i], tp);
-    }
-    for (const Edge& e : m.source.edges) edges.push_back({index[std::size_t(e[0])], index[std::size_t(e[1])]});
-  }
-  try {
-    result.source = make_stick_figure(std::move(source_positions), edges, source.name);
-    result.target = make_stick_figure(std::move(target_positions), edges, target.name);
-  } catch (const InvalidFigureError& error) {
-    // Each matched part is valid; together they can only fail where a dummy,
-    // rounded off its edge, touches a part close by.
-    throw VerificationError(std::string("correspond: the matched parts cannot be drawn in floating point: ") +
-                            error.what());
-  }
-  // Each part pair is compatible by construction; the nesting is the pair's
-  // own (the matched part i is the source's part i), and is checked here.
-  CompatibilityReport report;
-  result.pair = CompatiblePair::try_check(result.source, decompose(result.source), result.target,
-                                          decompose(result.target), report);
-  if (report.kind == Incompatibility::NestingDiffers)
-    throw IncompatibleFiguresError(Incompatibility::NestingDiffers,
-                                   "correspond: with the parts matched by shape and place, " + report.reason +
-                                       " (vertices of the matched figure)",
-                                   report.vertices);
-  if (!report.compatible())
-    throw InternalError("correspond: the matched figures are not compatible: " + report.reason);
+  FigureCorrespondence result =
+      assemble_matched_parts(source, target, source_pieces, target_pieces, matched, partner);
   result.milliseconds = milliseconds_since(start);
   return result;
 }
