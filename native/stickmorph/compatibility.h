@@ -101,7 +101,7 @@ class CompatiblePair {
 
  private:
   CompatiblePair() = default;
-  friend CompatiblePair scaled_pair(const CompatiblePair& pair, int exponent);
+  friend CompatiblePair scaled_pair(const CompatiblePair& pair, int exponent, bool* exact);
   StickFigure source_, target_;
   Decomposition source_dec_, target_dec_;
   FigureParts figure_parts_;

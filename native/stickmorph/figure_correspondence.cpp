@@ -104,6 +104,18 @@ FigureCorrespondence correspond_figures(const StickFigure& source, const StickFi
     throw NumericRangeError(below_normal);
   }
   if (!is_valid(matched, source, target)) throw NumericRangeError(below_normal);
+  // The checked pair goes back too, or the morph would run on the
+  // working-scale figures and write its frames there (a fuzz finding). It
+  // keeps its proof only if every coordinate went back exactly; otherwise
+  // the morph checks the written figures again.
+  if (matched.pair) {
+    bool exact = false;
+    CompatiblePair own_scale = scaled_pair(*matched.pair, -exponent, &exact);
+    if (exact)
+      matched.pair = std::move(own_scale);
+    else
+      matched.pair.reset();
+  }
   return matched;
 }
 

@@ -345,6 +345,10 @@ MorphStickFiguresResult morph_stick_figures(const StickFigure& source, const Sti
   matching.pins = options.pins;
   FigureCorrespondence correspondence = correspond_figures(source, target, matching);
   // The match ends with the check of the matched pair; it is not run again.
+  // That pair must be the matched figures as returned, at their own scale.
+  if (correspondence.pair && (correspondence.pair->source().vertices != correspondence.source.vertices ||
+                              correspondence.pair->target().vertices != correspondence.target.vertices))
+    throw InternalError("morph_stick_figures: the correspondence's checked pair is not its matched figures");
   MorphStickFiguresResult result = morph_corresponding(
       correspondence.pair ? *correspondence.pair : CompatiblePair::check(correspondence.source, correspondence.target),
       options);

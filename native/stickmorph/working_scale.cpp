@@ -146,12 +146,13 @@ void scale_frame_back(std::vector<Vec2>& positions, int exponent, const StickFig
   reverify_frame(source, source_decomposition, figure, frame_index, time);
 }
 
-CompatiblePair scaled_pair(const CompatiblePair& pair, int exponent) {
+CompatiblePair scaled_pair(const CompatiblePair& pair, int exponent, bool* exact) {
   CompatiblePair scaled = pair;
   // Exact by working_scale_exponent's choice: an angle sum of Algorithm 1
   // is the same for the scaled figure, and so is every orientation.
-  scale_points(scaled.source_.vertices, exponent);
-  scale_points(scaled.target_.vertices, exponent);
+  const bool source_exact = scale_points(scaled.source_.vertices, exponent);
+  const bool target_exact = scale_points(scaled.target_.vertices, exponent);
+  if (exact) *exact = source_exact && target_exact;
   return scaled;
 }
 

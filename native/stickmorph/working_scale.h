@@ -84,8 +84,11 @@ StickFigure scaled_figure(const StickFigure& figure, int exponent);
 
 /// The checked pair with both figures multiplied by 2^exponent, exactly (as
 /// scaled_figure): the same plane graphs, so the decompositions and the
-/// proof of compatibility carry over unchanged.
-CompatiblePair scaled_pair(const CompatiblePair& pair, int exponent);
+/// proof of compatibility carry over unchanged. Going back from the working
+/// scale (a pair matched there) may round a coordinate near 0: `exact`, if
+/// given, says whether every product was exact, and only then is the result
+/// the same checked pair.
+CompatiblePair scaled_pair(const CompatiblePair& pair, int exponent, bool* exact = nullptr);
 
 /// The larger side of the figure's bounding box (0 for a single point).
 double figure_size(const StickFigure& figure);
