@@ -12,6 +12,7 @@
 #include <numeric>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "figures.h"
@@ -777,6 +778,33 @@ TEST_CASE("morph_stick_figures with correspond = Auto morphs the matched figure"
   CHECK_THROWS_AS(morph_stick_figures(plus_sign(), plus_sign(), by_index), InvalidArgumentError);
 }
 
+namespace {
+
+// fuzz_correspond_pair's stroke (two findings below): a source polyline of
+// two edges near 1e39, and a target stroke of length ~1e39 whose last
+// edges, near (1.06e37, 0), are 1e20 to 1e23 long.
+struct StrokePair {
+  StickFigure source, target;
+};
+
+StrokePair crowded_stroke_pair() {
+  StickFigure source = make_stick_figure(
+      {{5.231841391409429e+39, 2.1267647932558654e+38}, {4.253529586511731e+37, 0.0},
+       {2.084229497390748e+39, 1.9566236097953962e+39}},
+      {{1, 0}, {2, 1}});
+  StickFigure target = make_stick_figure(
+      {{1.3079603478523572e+39, 5.3169119831396635e+37}, {1.0633823966279327e+37, 0.0},
+       {5.21057374347687e+38, 4.8915590244884904e+38}, {1.568178709424072e+37, 2.068837347525161e+35},
+       {4.585171458275706e+37, 1.4433561728064644e+36}, {1.0653465846154662e+37, 8.049950768580393e+32},
+       {1.063390039382748e+37, 3.1322765636499586e+30}, {1.0633824263662784e+37, 1.2187846551167155e+28},
+       {1.063382396743646e+37, 4.742352743644808e+25}, {1.063382396628383e+37, 1.845273441106929e+23},
+       {1.0633823966279344e+37, 718005230002696093696.0}},
+      {{1, 10}, {2, 1}, {3, 4}, {4, 0}, {5, 3}, {6, 5}, {7, 6}, {8, 7}, {9, 8}, {10, 9}});
+  return {std::move(source), std::move(target)};
+}
+
+}  // namespace
+
 TEST_CASE("a dummy lands on the edge between its neighbours where edges are shorter than the arc's rounding",
           "[correspond_figures]") {
   // fuzz_correspond_pair's finding: a target stroke of length ~1e39 whose
@@ -785,18 +813,7 @@ TEST_CASE("a dummy lands on the edge between its neighbours where edges are shor
   // arc value. The source's middle vertex falls between target vertices 9
   // and 10; by its parameter alone it was put on edge (2, 1), past vertex
   // 1, and the matched edges no longer subdivided the target.
-  const StickFigure source = make_stick_figure(
-      {{5.231841391409429e+39, 2.1267647932558654e+38}, {4.253529586511731e+37, 0.0},
-       {2.084229497390748e+39, 1.9566236097953962e+39}},
-      {{1, 0}, {2, 1}});
-  const StickFigure target = make_stick_figure(
-      {{1.3079603478523572e+39, 5.3169119831396635e+37}, {1.0633823966279327e+37, 0.0},
-       {5.21057374347687e+38, 4.8915590244884904e+38}, {1.568178709424072e+37, 2.068837347525161e+35},
-       {4.585171458275706e+37, 1.4433561728064644e+36}, {1.0653465846154662e+37, 8.049950768580393e+32},
-       {1.063390039382748e+37, 3.1322765636499586e+30}, {1.0633824263662784e+37, 1.2187846551167155e+28},
-       {1.063382396743646e+37, 4.742352743644808e+25}, {1.063382396628383e+37, 1.845273441106929e+23},
-       {1.0633823966279344e+37, 718005230002696093696.0}},
-      {{1, 10}, {2, 1}, {3, 4}, {4, 0}, {5, 3}, {6, 5}, {7, 6}, {8, 7}, {9, 8}, {10, 9}});
+  const auto [source, target] = crowded_stroke_pair();
   const FigureCorrespondence c = correspond_figures(source, target);
   CHECK(is_valid(c, source, target));
   CHECK(check_compatibility(c.source, c.target).compatible());
@@ -804,4 +821,26 @@ TEST_CASE("a dummy lands on the edge between its neighbours where edges are shor
   REQUIRE(c.target_places.size() > 1);
   CHECK(c.target_places[1].vertex == -1);
   CHECK(c.target_places[1].edge == 9);
+}
+
+TEST_CASE("a pair matched in the working scale is morphed and written at its own scale", "[correspond_figures]") {
+  // fuzz_correspond_pair's finding (tests/data/fuzz/regressions/
+  // correspond_pair/working_scale_pair_not_scaled_back.bin): figures near
+  // 1e39 are matched in the working scale (working_scale.h), and the checked
+  // pair the match handed to the morph stayed there, so every frame came
+  // out 2^-130 times the figures.
+  const auto [source, target] = crowded_stroke_pair();
+  const FigureCorrespondence matched = correspond_figures(source, target);
+  REQUIRE(matched.pair);
+  CHECK(matched.pair->source().vertices == matched.source.vertices);
+  CHECK(matched.pair->target().vertices == matched.target.vertices);
+  MorphStickFiguresOptions options;
+  options.frames = 5;
+  options.correspond = CorrespondenceMode::Auto;
+  const MorphStickFiguresResult result = morph_stick_figures(source, target, options);
+  REQUIRE(result.frames.size() == 5);
+  CHECK(result.frames.front() == matched.source.vertices);
+  CHECK(result.frames.back() == matched.target.vertices);
+  // The similarity's centres are reported at the figures' scale too.
+  CHECK(result.stats.similarity.source_center[0] > 1e38);
 }
