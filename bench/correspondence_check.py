@@ -112,14 +112,15 @@ def _box_pairs(lo, hi, lo2, hi2, same):
     return out
 
 
-def plane_problems(points, edges, limit=MAX_PROBLEMS):
+def plane_problems(points, edges, limit=MAX_PROBLEMS, exact=None):
     """Why the drawing is not a straight-line plane graph (empty list: it is one).
 
     Complete for segments: two edges without a common end either cross properly (all four
     orientations nonzero, opposite in pairs) or one has an end on the other (caught by the
     vertex-on-edge test) or they are apart; two edges with a common end can only overlap,
     and then the nearer far end lies on the other edge. Coincident vertices are compared as
-    exact doubles."""
+    exact doubles. `exact`: the points already made exact (Fractions, or integers after one
+    common power of two), when the caller has them."""
     pts = np.asarray(points, dtype=float).reshape(-1, 2)
     problems = []
     if not np.all(np.isfinite(pts)):
@@ -137,7 +138,8 @@ def plane_problems(points, edges, limit=MAX_PROBLEMS):
     e = np.asarray(edges, dtype=np.int64).reshape(-1, 2)
     a, b = pts[e[:, 0]], pts[e[:, 1]]
     lo, hi = np.minimum(a, b), np.maximum(a, b)
-    exact = exact_points(pts)
+    if exact is None:
+        exact = exact_points(pts)
 
     for i, k in _box_pairs(pts, pts, lo, hi, same=False):
         u, v = int(e[k, 0]), int(e[k, 1])
@@ -164,8 +166,8 @@ def plane_problems(points, edges, limit=MAX_PROBLEMS):
     return problems
 
 
-def components(n, edges):
-    """Number of connected components of the graph on vertices 0..n-1."""
+def parts_of(n, edges):
+    """part[v] for every vertex, parts numbered in the order of their smallest vertex."""
     parent = list(range(n))
 
     def find(x):
@@ -175,8 +177,18 @@ def components(n, edges):
         return x
 
     for u, v in edges:
-        parent[find(u)] = find(v)
-    return len({find(x) for x in range(n)})
+        ru, rv = find(u), find(v)
+        if ru != rv:
+            parent[max(ru, rv)] = min(ru, rv)
+    number, part = {}, []
+    for v in range(n):
+        part.append(number.setdefault(find(v), len(number)))
+    return part
+
+
+def components(n, edges):
+    """Number of connected components of the graph on vertices 0..n-1."""
+    return len(set(parts_of(n, edges)))
 
 
 def clearance(points, edges):
@@ -669,6 +681,14 @@ def _check_output(out, source, target, pins, frames, max_full_edges, row):
     return result["problems"]
 
 
+def print_columns(head, body, stream):
+    """A plain-text table: the header row, then the rows, each column as wide as its widest cell."""
+    widths = [max([len(h)] + [len(b[k]) for b in body]) for k, h in enumerate(head)]
+    print("  ".join(h.ljust(w) for h, w in zip(head, widths)), file=stream)
+    for b in body:
+        print("  ".join(c.ljust(w) for c, w in zip(b, widths)), file=stream)
+
+
 def print_table(rows, stream=sys.stdout):
     head = ["pair", "family", "n_source", "n_target", "m", "dummies", "frames checked", "landmarks", "result",
             "seconds"]
@@ -676,10 +696,7 @@ def print_table(rows, stream=sys.stdout):
              "-" if r["m"] is None else str(r["m"]), "-" if r["dummies"] is None else str(r["dummies"]),
              r["frames_checked"], r.get("landmarks", "-"), r["result"] + ("" if r["expect"] == "match" else " (refuse)"),
              "-" if r["seconds"] is None else f"{r['seconds']:.2f}"] for r in rows]
-    widths = [max(len(h), *(len(b[k]) for b in body)) if body else len(h) for k, h in enumerate(head)]
-    print("  ".join(h.ljust(w) for h, w in zip(head, widths)), file=stream)
-    for b in body:
-        print("  ".join(c.ljust(w) for c, w in zip(b, widths)), file=stream)
+    print_columns(head, body, stream)
     failed = [r for r in rows if r["result"] != "ok"]
     for r in failed:
         print(f"\nFAIL {r['pair']} ({r['family']}, expect {r['expect']}):", file=stream)
@@ -702,45 +719,68 @@ def print_table(rows, stream=sys.stdout):
           f"{sum(r['seconds'] or 0 for r in rows):.1f} s", file=stream)
 
 
-def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+def add_corpus_arguments(ap):
+    """The arguments of a corpus checker (this one and multipart_check.py)."""
     ap.add_argument("corpus", type=pathlib.Path, help="folder with manifest.json")
     ap.add_argument("--stickmorph", required=True, type=pathlib.Path, help="the stickmorph executable")
     ap.add_argument("--frames", type=int, default=20, help="frames per morph (default 20)")
     ap.add_argument("--timeout", type=float, default=120.0, help="seconds per CLI run (default 120)")
-    ap.add_argument("--json", type=pathlib.Path, help="write the table here")
+    ap.add_argument("--json", type=pathlib.Path, help="write the rows here")
     ap.add_argument("--keep", type=pathlib.Path, help="keep the morph outputs in this folder")
-    ap.add_argument("--max-full-edges", type=int, default=DEFAULT_MAX_FULL_EDGES,
-                    help=f"check every frame up to this many matched edges (default {DEFAULT_MAX_FULL_EDGES})")
     ap.add_argument("--only", action="append", default=[], help="check only this pair (repeatable)")
-    args = ap.parse_args(argv)
+
+
+def read_manifest(args):
+    """The corpus's manifest entries, or None after one `error:` line on stderr when the
+    corpus, the executable or the frame count will not do."""
     manifest_path = args.corpus / "manifest.json"
     if not manifest_path.exists():
         print(f"error: {manifest_path} does not exist", file=sys.stderr)
-        return 2
+        return None
     if not args.stickmorph.exists():
         print(f"error: {args.stickmorph} does not exist", file=sys.stderr)
-        return 2
+        return None
     if args.frames < 2:
         print("error: --frames must be at least 2", file=sys.stderr)
-        return 2
-    manifest = json.loads(manifest_path.read_text())
-    if args.only:
-        manifest = [e for e in manifest if e["name"] in args.only]
+        return None
+    return json.loads(manifest_path.read_text())
+
+
+def check_corpus(args, manifest, check, print_table, prefix):
+    """Runs check(entry, workdir) on every manifest entry, in --keep or a temporary folder,
+    with a progress line per pair on stderr; prints the table, writes --json, and returns
+    the exit code (1 if any pair failed)."""
     rows = []
-    with tempfile.TemporaryDirectory(prefix="correspondence_check_") as tmp:
+    with tempfile.TemporaryDirectory(prefix=prefix) as tmp:
         workdir = args.keep if args.keep else pathlib.Path(tmp)
         workdir.mkdir(parents=True, exist_ok=True)
         for entry in manifest:
-            rows.append(run_pair(entry, args.corpus, args.stickmorph.resolve(), args.frames, args.timeout,
-                                 workdir, args.max_full_edges))
-            r = rows[-1]
-            print(f"{r['pair']}: {r['result']} ({r['seconds']} s)", file=sys.stderr, flush=True)
+            r = check(entry, workdir)
+            rows.append(r)
+            checking = f" + {r['check_seconds']} s" if "check_seconds" in r else ""
+            print(f"{r['pair']}: {r['result']} ({r['seconds']} s{checking})", file=sys.stderr, flush=True)
     print_table(rows)
     if args.json:
         args.json.write_text(json.dumps(rows, indent=1) + "\n")
     return 1 if any(r["result"] != "ok" for r in rows) else 0
 
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    add_corpus_arguments(ap)
+    ap.add_argument("--max-full-edges", type=int, default=DEFAULT_MAX_FULL_EDGES,
+                    help=f"check every frame up to this many matched edges (default {DEFAULT_MAX_FULL_EDGES})")
+    args = ap.parse_args(argv)
+    manifest = read_manifest(args)
+    if manifest is None:
+        return 2
+    if args.only:
+        manifest = [e for e in manifest if e["name"] in args.only]
+    def check(entry, workdir):
+        return run_pair(entry, args.corpus, args.stickmorph.resolve(), args.frames, args.timeout, workdir,
+                        args.max_full_edges)
+
+    return check_corpus(args, manifest, check, print_table, "correspondence_check_")
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -62,7 +62,6 @@ import pathlib
 import re
 import subprocess
 import sys
-import tempfile
 import time
 from fractions import Fraction
 
@@ -89,98 +88,16 @@ def exact_frame(points):
     return [(int(x * den), int(y * den)) for x, y in fr]
 
 
-def orient(a, b, c):
-    """1 if a -> b -> c turns left, -1 right, 0 collinear (integer points)."""
-    d = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
-    return (d > 0) - (d < 0)
-
-
-def _box_pairs(lo, hi, lo2, hi2, same):
-    """(i, j) whose closed boxes meet (i < j when same), in row blocks."""
-    out = []
-    for start in range(0, len(lo), 256):
-        l1, h1 = lo[start:start + 256, None, :], hi[start:start + 256, None, :]
-        meet = np.all((l1 <= hi2[None, :, :]) & (lo2[None, :, :] <= h1), axis=2)
-        rows, cols = np.nonzero(meet)
-        rows = rows + start
-        if same:
-            keep = rows < cols
-            rows, cols = rows[keep], cols[keep]
-        out.extend(zip(rows.tolist(), cols.tolist()))
-    return out
-
-
-def plane_problems(points, edges, exact=None, limit=MAX_PROBLEMS):
-    """Why the drawing is not a straight-line plane graph (empty: it is one). Two segments
-    without a common end that meet either cross properly or one has an end on the other;
-    two with a common end can only meet again by overlapping, and then a far end lies on the
-    other. So "no coincident vertices, no vertex on an edge not ending there, no proper
-    crossing" is complete."""
-    pts = np.asarray(points, dtype=float).reshape(-1, 2)
-    if not np.all(np.isfinite(pts)):
-        return ["a coordinate is not finite"]
-    ex = exact_frame(pts) if exact is None else exact
-    problems = []
-    seen = {}
-    for i, p in enumerate(ex):
-        j = seen.setdefault(p, i)
-        if j != i:
-            problems.append(f"vertices {j} and {i} coincide at {pts[i].tolist()}")
-            if len(problems) >= limit:
-                return problems
-    if not edges:
-        return problems
-    e = np.asarray(edges, dtype=np.int64).reshape(-1, 2)
-    a, b = pts[e[:, 0]], pts[e[:, 1]]
-    lo, hi = np.minimum(a, b), np.maximum(a, b)
-    for i, k in _box_pairs(pts, pts, lo, hi, same=False):
-        u, v = int(e[k, 0]), int(e[k, 1])
-        if i != u and i != v and orient(ex[u], ex[v], ex[i]) == 0:
-            problems.append(f"vertex {i} lies on edge {u}-{v}")
-            if len(problems) >= limit:
-                return problems
-    for k, l in _box_pairs(lo, hi, lo, hi, same=True):
-        p, q, r, s = int(e[k, 0]), int(e[k, 1]), int(e[l, 0]), int(e[l, 1])
-        if len({p, q, r, s}) < 4:
-            continue
-        if (orient(ex[p], ex[q], ex[r]) * orient(ex[p], ex[q], ex[s]) < 0
-                and orient(ex[r], ex[s], ex[p]) * orient(ex[r], ex[s], ex[q]) < 0):
-            problems.append(f"edges {p}-{q} and {r}-{s} cross")
-            if len(problems) >= limit:
-                return problems
-    return problems
+# Shared with the checker of connected pairs: exact on the integer frames above.
+orient = cc.orient
+plane_problems = cc.plane_problems
+adjacency = cc.adjacency
+load_figure = cc.load_figure
+parts_of = cc.parts_of
 
 
 # ---------------------------------------------------------------------------
 # parts, rotation system, faces, nesting
-
-def parts_of(n, edges):
-    """part[v] for every vertex, parts numbered in the order of their smallest vertex."""
-    parent = list(range(n))
-
-    def find(x):
-        while parent[x] != x:
-            parent[x] = parent[parent[x]]
-            x = parent[x]
-        return x
-
-    for u, v in edges:
-        ru, rv = find(u), find(v)
-        if ru != rv:
-            parent[max(ru, rv)] = min(ru, rv)
-    number, part = {}, []
-    for v in range(n):
-        part.append(number.setdefault(find(v), len(number)))
-    return part
-
-
-def adjacency(n, edges):
-    adj = [[] for _ in range(n)]
-    for u, v in edges:
-        adj[u].append(v)
-        adj[v].append(u)
-    return adj
-
 
 def _angle_key(d):
     """Sort key of a nonzero integer direction by its angle in [0, 2 pi): first the half plane
@@ -308,7 +225,7 @@ class Topology:
         if pts.shape != (self.n, 2):
             return [f"the frame has shape {list(pts.shape)}, not [{self.n}, 2]"]
         exact = exact_frame(pts)
-        bad = plane_problems(pts, self.edges, exact, limit)
+        bad = plane_problems(pts, self.edges, limit=limit, exact=exact)
         if bad:
             return ["not a plane graph: " + "; ".join(bad)]
         rot = rotation_system(exact, self.adj)
@@ -479,11 +396,6 @@ def check_nesting_refusal(check_proc, morph_proc, involved, output_exists=False)
 # ---------------------------------------------------------------------------
 # the corpus run
 
-def load_figure(path):
-    doc = json.loads(pathlib.Path(path).read_text())
-    return np.asarray(doc["vertices"], dtype=float).reshape(-1, 2), [tuple(int(x) for x in e) for e in doc["edges"]]
-
-
 def _run(cmd, timeout):
     return subprocess.run(cmd, capture_output=True, text=True, timeout=timeout, stdin=subprocess.DEVNULL)
 
@@ -555,10 +467,7 @@ def print_table(rows, stream=sys.stdout):
              "-" if r["m"] is None else str(r["m"]), r["result"],
              "-" if r["seconds"] is None else f"{r['seconds']:.2f}",
              "-" if r["check_seconds"] is None else f"{r['check_seconds']:.2f}"] for r in rows]
-    widths = [max([len(h)] + [len(b[k]) for b in body]) for k, h in enumerate(head)]
-    print("  ".join(h.ljust(w) for h, w in zip(head, widths)), file=stream)
-    for b in body:
-        print("  ".join(c.ljust(w) for c, w in zip(b, widths)), file=stream)
+    cc.print_columns(head, body, stream)
     failed = [r for r in rows if r["result"] != "ok"]
     for r in failed:
         print(f"\nFAIL {r['pair']} ({r['kind']}):", file=stream)
@@ -577,47 +486,23 @@ def print_table(rows, stream=sys.stdout):
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("corpus", type=pathlib.Path, help="folder with manifest.json")
-    ap.add_argument("--stickmorph", required=True, type=pathlib.Path, help="the stickmorph executable")
-    ap.add_argument("--frames", type=int, default=20, help="frames per morph (default 20)")
-    ap.add_argument("--timeout", type=float, default=120.0, help="seconds per CLI run (default 120)")
-    ap.add_argument("--json", type=pathlib.Path, help="write the rows here")
-    ap.add_argument("--keep", type=pathlib.Path, help="keep the morph outputs in this folder")
+    cc.add_corpus_arguments(ap)
     ap.add_argument("--method", help="passed to `morph --method` (default: the CLI's own default)")
-    ap.add_argument("--only", action="append", default=[], help="check only this pair (repeatable)")
     args = ap.parse_args(argv)
-    manifest_path = args.corpus / "manifest.json"
-    if not manifest_path.exists():
-        print(f"error: {manifest_path} does not exist", file=sys.stderr)
+    manifest = cc.read_manifest(args)
+    if manifest is None:
         return 2
-    if not args.stickmorph.exists():
-        print(f"error: {args.stickmorph} does not exist", file=sys.stderr)
-        return 2
-    if args.frames < 2:
-        print("error: --frames must be at least 2", file=sys.stderr)
-        return 2
-    manifest = json.loads(manifest_path.read_text())
     bad = [e.get("name") for e in manifest if e.get("kind") not in KINDS]
     if bad:
         print(f"error: manifest entries of unknown kind: {bad}", file=sys.stderr)
         return 2
     if args.only:
         manifest = [e for e in manifest if e["name"] in args.only]
-    rows = []
-    with tempfile.TemporaryDirectory(prefix="multipart_check_") as tmp:
-        workdir = args.keep if args.keep else pathlib.Path(tmp)
-        workdir.mkdir(parents=True, exist_ok=True)
-        for entry in manifest:
-            rows.append(run_pair(entry, args.corpus, args.stickmorph.resolve(), args.frames, args.timeout, workdir,
-                                 args.method))
-            r = rows[-1]
-            print(f"{r['pair']}: {r['result']} ({r['seconds']} s + {r['check_seconds']} s)", file=sys.stderr,
-                  flush=True)
-    print_table(rows)
-    if args.json:
-        args.json.write_text(json.dumps(rows, indent=1) + "\n")
-    return 1 if any(r["result"] != "ok" for r in rows) else 0
+    def check(entry, workdir):
+        return run_pair(entry, args.corpus, args.stickmorph.resolve(), args.frames, args.timeout, workdir,
+                        args.method)
 
+    return cc.check_corpus(args, manifest, check, print_table, "multipart_check_")
 
 if __name__ == "__main__":
     sys.exit(main())

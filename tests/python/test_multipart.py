@@ -212,7 +212,7 @@ def test_checker_fails_a_crossing_a_touch_and_a_coincidence():
     assert "cross" in topo.frame_problems(crossing)[0]
     touching = src.copy()
     touching[0], touching[1], touching[16] = (1.0, 0.0), (1.0, 0.5), (1.0, 0.25)  # 16 on the edge 0-1
-    assert "vertex 16 lies on edge 0-1" in topo.frame_problems(touching)[0]
+    assert "vertex 16 lies on edge 0 (0, 1)" in topo.frame_problems(touching)[0]
     coincide = src.copy()
     coincide[17] = coincide[16]
     assert "coincide" in topo.frame_problems(coincide)[0]
