@@ -79,13 +79,13 @@ std::string output_defect(const FigureTriangulation& tri, const StickFigure& sou
 
 struct GuidedMorph::State {
   State(const FigureTriangulation& normalised, const StickFigure& source_figure,
-        const Decomposition& source_decomposition, const SimilarityMotion& motion, RigidGuide rigid_guide,
-        WeightKind kind, Easing easing_kind)
+        const Decomposition& source_decomposition, const SimilarityMotion& motion,
+        std::unique_ptr<const GuideTrajectory> trajectory, WeightKind kind, Easing easing_kind)
       : tri(normalised),
         source(source_figure),
         decomposition(source_decomposition),
         similarity(motion),
-        guide(std::move(rigid_guide)),
+        guide(std::move(trajectory)),
         weight_kind(kind),
         easing(easing_kind),
         topo(build_topology(tri)),
@@ -114,7 +114,7 @@ struct GuidedMorph::State {
   const StickFigure source;
   const Decomposition decomposition;
   const SimilarityMotion similarity;
-  const RigidGuide guide;
+  const std::unique_ptr<const GuideTrajectory> guide;
   const WeightKind weight_kind;
   const Easing easing;
   const Topology topo;
@@ -152,7 +152,7 @@ struct GuidedMorph::State {
 
   // Steps 1-2: the guide frame in normalised space.
   std::vector<Vec2> guide_frame(double u) {
-    const std::vector<Vec2> figure = similarity.unapply(u, guide.at(u));
+    const std::vector<Vec2> figure = similarity.unapply(u, guide->at(u));
     std::vector<Vec2> g = tri.source;  // the enclosure is fixed
     std::copy(figure.begin(), figure.end(), g.begin());
     // The Steiner nodes' values in g are not a warm start: the system
@@ -272,7 +272,7 @@ struct GuidedMorph::State {
     trust_samples.assign(kTrustSamples + 1, std::vector<float>(n, 1.0f));
     std::vector<std::vector<Vec2>> guide_frames(kTrustSamples + 1);
     for (int j = 0; j <= kTrustSamples; ++j) {
-      sample_u[j] = guide.parameter_at(sample_time(j), Easing::None);
+      sample_u[j] = guide->parameter_at(sample_time(j), Easing::None);
       if (j == 0 || j == kTrustSamples) continue;  // the inputs themselves
       blend_weights(sample_u[j]);
       guide_frames[j] = guide_frame(sample_u[j]);
@@ -299,7 +299,7 @@ struct GuidedMorph::State {
       figure[j] = similarity.apply(sample_u[j], std::vector<Vec2>(p.begin(), p.begin() + n));
     }
     own_motion.clear();
-    if (!leaves_guide) return;
+    if (!leaves_guide || !guide->retimed_by_morph()) return;
     // As RigidGuide::parameter_at: a morph that does not move beyond
     // rounding keeps the guide's timing.
     double size = 0;
@@ -322,7 +322,7 @@ struct GuidedMorph::State {
   // guide (sample_guide), with the easing on top.
   double parameter_at(double t) const {
     if (t == 0 || t == 1) return t;
-    if (own_motion.empty() || !(own_motion.back() > 0)) return guide.parameter_at(t, easing);
+    if (own_motion.empty() || !(own_motion.back() > 0)) return guide->parameter_at(t, easing);
     const double eased = easing == Easing::InOut ? t * t * (3 - 2 * t) : t;
     const double goal = eased * own_motion.back();
     const auto it = std::lower_bound(own_motion.begin(), own_motion.end(), goal);
@@ -330,7 +330,7 @@ struct GuidedMorph::State {
     const double lo = own_motion[j - 1], hi = own_motion[j];
     const double f = hi > lo ? std::clamp((goal - lo) / (hi - lo), 0.0, 1.0) : 0.0;
     // Between samples, even along the guide.
-    return guide.parameter_at((1 - f) * sample_time(j - 1) + f * sample_time(j), Easing::None);
+    return guide->parameter_at((1 - f) * sample_time(j - 1) + f * sample_time(j), Easing::None);
   }
 
   // Steps 3-4: the guide frame when every figure vertex trusts it fully,
@@ -372,6 +372,13 @@ struct GuidedMorph::State {
 GuidedMorph::GuidedMorph(const FigureTriangulation& normalised, const StickFigure& source,
                          const Decomposition& source_decomposition, const std::vector<Vec2>& target_vertices,
                          const SimilarityMotion& similarity, RigidGuide guide, WeightKind kind, Easing easing)
+    : GuidedMorph(normalised, source, source_decomposition, target_vertices, similarity,
+                  std::make_unique<const RigidGuide>(std::move(guide)), kind, easing) {}
+
+GuidedMorph::GuidedMorph(const FigureTriangulation& normalised, const StickFigure& source,
+                         const Decomposition& source_decomposition, const std::vector<Vec2>& target_vertices,
+                         const SimilarityMotion& similarity, std::unique_ptr<const GuideTrajectory> guide,
+                         WeightKind kind, Easing easing)
     : state_(std::make_unique<State>(normalised, source, source_decomposition, similarity, std::move(guide), kind,
                                      easing)) {
   State& s = *state_;

@@ -103,6 +103,12 @@ class GuidedMorph {
   GuidedMorph(const FigureTriangulation& normalised, const StickFigure& source,
               const Decomposition& source_decomposition, const std::vector<Vec2>& target_vertices,
               const SimilarityMotion& similarity, RigidGuide guide, WeightKind kind, Easing easing);
+  /// The same following any trajectory (a key-pose segment): `guide` must
+  /// run from the source to the target vertices, in output space.
+  GuidedMorph(const FigureTriangulation& normalised, const StickFigure& source,
+              const Decomposition& source_decomposition, const std::vector<Vec2>& target_vertices,
+              const SimilarityMotion& similarity, std::unique_ptr<const GuideTrajectory> guide, WeightKind kind,
+              Easing easing);
   ~GuidedMorph();
   GuidedMorph(GuidedMorph&&) noexcept;
   GuidedMorph& operator=(GuidedMorph&&) noexcept;

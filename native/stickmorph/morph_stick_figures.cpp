@@ -5,11 +5,13 @@
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
+#include <memory>
 #include <optional>
 #include <utility>
 
 #include "stickmorph/compatibility.h"
 #include "stickmorph/errors.h"
+#include "stickmorph/internal/rigid_morph_setup.h"
 #include "stickmorph/working_scale.h"
 
 namespace stickmorph {
@@ -19,146 +21,23 @@ double milliseconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The target mapped back by the similarity at t = 1, as a stick figure, or
-// nothing when rounding made it something else than a figure compatible
-// with the source (possible only for a nearly degenerate figure). A pure
-// similarity pair maps back onto the source up to rounding, and is then
-// snapped onto it exactly, so that its morph needs no Steiner vertex and is
-// the similarity itself.
-std::optional<CompatiblePair> normalised_pair(const CompatiblePair& pair, const SimilarityMotion& similarity) {
-  const StickFigure& source = pair.source();
-  const StickFigure& target = pair.target();
-  std::vector<Vec2> vertices;
-  vertices.reserve(target.vertices.size());
-  double radius = 0, largest_gap = 0;
-  for (std::size_t v = 0; v < target.vertices.size(); ++v) {
-    vertices.push_back(similarity.unapply(1.0, target.vertices[v]));
-    radius = std::max({radius, std::abs(source.vertices[v][0] - similarity.source_center[0]),
-                       std::abs(source.vertices[v][1] - similarity.source_center[1])});
-    largest_gap = std::max({largest_gap, std::abs(vertices[v][0] - source.vertices[v][0]),
-                            std::abs(vertices[v][1] - source.vertices[v][1])});
-  }
-  // Far below anything visible, far above the rounding of the map.
-  constexpr double kSnap = 1e-9;
-  if (largest_gap <= kSnap * radius) vertices = source.vertices;
-  std::vector<std::array<std::int64_t, 2>> edges;
-  for (const Edge& e : target.edges) edges.push_back({e[0], e[1]});
-  try {
-    // A third figure, decomposed once and checked against the source's
-    // decomposition, which the pair already has.
-    StickFigure figure = make_stick_figure(std::move(vertices), edges, target.name);
-    Decomposition decomposition = decompose(figure);
-    return CompatiblePair::check(source, pair.source_decomposition(), std::move(figure), std::move(decomposition));
-  } catch (const InvalidFigureError&) {
-    return std::nullopt;
-  } catch (const IncompatibleFiguresError&) {
-    return std::nullopt;
-  }
-}
-
+// The rigid morph's set-up on a checked pair (internal/rigid_morph_setup.h),
+// following the pair's RigidGuide under the similarity the options ask for.
 GuidedMorph prepare_rigid_morph_checked(const CompatiblePair& pair, const MorphStickFiguresOptions& options,
                                         const FigureTriangulationOptions& paper_options, WeightKind weights,
                                         MorphStickFiguresStats& stats) {
-  // The user's pair is checked (its report, not the mapped-back one's).
   const StickFigure& source = pair.source();
   const StickFigure& target = pair.target();
   const SimilarityMotion similarity =
       fit_similarity(source.vertices, target.vertices, options.rotation.value_or(RotationDirection::Short),
                      int(options.turns.value_or(0)));
   stats.similarity = similarity;
-  FigureTriangulation triangulation;
-  std::optional<GuidedMorph> morph;
-  const Easing easing = options.easing.value_or(Easing::None);
-  try {
-    auto start = std::chrono::steady_clock::now();
-    const std::optional<CompatiblePair> normalised = normalised_pair(pair, similarity);
-    // The enclosure holds the guide's whole way as the triangulation sees
-    // it (mapped back by the similarity when that is factored out), not
-    // only its two ends (FigureTriangulationOptions::enclosed_points).
-    std::optional<RigidGuide> guide(std::in_place, source, target.vertices, similarity);
-    auto guide_points = [&](bool mapped_back) {
-      constexpr int kEnclosedSamples = 16;
-      std::vector<Vec2> points;
-      for (int j = 1; j < kEnclosedSamples; ++j) {
-        const double u = double(j) / kEnclosedSamples;
-        for (const Vec2& p : guide->at(u)) points.push_back(mapped_back ? similarity.unapply(u, p) : p);
-      }
-      return points;
-    };
-    FigureTriangulationOptions triangulation_options = paper_options;
-    triangulation_options.enclosed_points = guide_points(normalised.has_value());
-    // For the fallbacks below.
-    const std::vector<Vec2> unmapped_points = guide_points(false);
-    // The triangulation, each attempt verified exactly by triangulate_figures:
-    // the mapped-back pair in the enclosure around the guide; else the pair
-    // itself in it; else the paper's enclosure around the pair (where the
-    // barycentric method's triangulation exists, the rigid method's does).
-    // An attempt fails only where the spiderweb embedding of section 4
-    // finds no valid embedding of a face in both figures, which depends on
-    // the exact shapes; the last attempt's error is the one reported.
-    auto triangulate_pair_itself = [&] {
-      triangulation_options.enclosed_points = unmapped_points;
-      try {
-        triangulation = triangulate_figures(pair, triangulation_options, &stats.triangulation);
-      } catch (const VerificationError&) {
-        triangulation = triangulate_figures(pair, paper_options, &stats.triangulation);
-      }
-    };
-    bool mapped_back = normalised.has_value();
-    if (mapped_back) {
-      try {
-        triangulation = triangulate_figures(*normalised, triangulation_options, &stats.triangulation);
-      } catch (const VerificationError&) {
-        mapped_back = false;
-      }
-    }
-    if (!mapped_back) triangulate_pair_itself();
-    stats.triangulate_ms = milliseconds_since(start);
-
-    start = std::chrono::steady_clock::now();
-    auto make = [&](const SimilarityMotion& factored) {
-      // The guide moves into the morph; a failed attempt needs a new one.
-      if (!guide) guide.emplace(source, target.vertices, similarity);
-      RigidGuide own = std::move(*guide);
-      guide.reset();
-      morph.emplace(triangulation, source, pair.source_decomposition(), target.vertices, factored, std::move(own),
-                    weights, easing);
-    };
-    if (mapped_back) {
-      try {
-        make(similarity);
-        stats.similarity_factored = true;
-      } catch (const VerificationError&) {
-        // The triangulation moved to the target by the similarity lost a
-        // nearly flat triangle to rounding: triangulate the pair itself.
-        const auto again = std::chrono::steady_clock::now();
-        triangulate_pair_itself();
-        stats.triangulate_ms += milliseconds_since(again);
-      }
-    }
-    if (!morph) {
-      try {
-        make(SimilarityMotion{});
-      } catch (const VerificationError&) {
-        // Convex-combination weights of a nearly flat triangle that the
-        // guide's enclosure made failed in floating point (node_weights):
-        // the paper's own triangulation of the pair, the barycentric
-        // method's, is the last resort.
-        const auto again = std::chrono::steady_clock::now();
-        triangulation = triangulate_figures(pair, paper_options, &stats.triangulation);
-        stats.triangulate_ms += milliseconds_since(again);
-        make(SimilarityMotion{});
-      }
-    }
-    const double setup_ms = milliseconds_since(start);
-    stats.factorize_ms = setup_ms;
-    stats.steiner_vertices = triangulation.steiner_vertices;
-    stats.triangles = int(triangulation.triangles.size());
-    return std::move(*morph);
-  } catch (const InvalidArgumentError& error) {
-    throw InternalError(std::string("morph_stick_figures: the engine refused its own intermediate result: ") +
-                        error.what());
-  }
+  return internal::prepare_guided_morph(
+      pair, similarity,
+      [&]() -> std::unique_ptr<const GuideTrajectory> {
+        return std::make_unique<const RigidGuide>(source, target.vertices, similarity);
+      },
+      paper_options, weights, options.easing.value_or(Easing::None), stats);
 }
 
 void morph_rigidly(const CompatiblePair& pair, const MorphStickFiguresOptions& options,

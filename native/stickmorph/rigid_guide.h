@@ -40,7 +40,27 @@ enum class Easing {
 Easing parse_easing(const std::string& name);
 std::string easing_name(Easing easing);
 
-class RigidGuide {
+/// What the rigid morph (guided_morph.h) follows: the figure's #V positions
+/// in output space at every morph parameter u in [0, 1], and the parameter
+/// at every animation time. RigidGuide is the pair's; the key-pose
+/// sequence's segments (key_pose_guide.h) are others.
+class GuideTrajectory {
+ public:
+  virtual ~GuideTrajectory() = default;
+  /// The #V vertex positions at morph parameter u in [0, 1]: the segment's
+  /// first figure at 0 and its last at 1 up to rounding.
+  virtual std::vector<Vec2> at(double u) const = 0;
+  /// The morph parameter at animation time t in [0, 1]: 0 -> 0, 1 -> 1,
+  /// increasing.
+  virtual double parameter_at(double t, Easing easing) const = 0;
+  /// Whether the morph may retime itself by its own motion where it leaves
+  /// the trajectory, for even speed (GuidedMorph). A trajectory whose timing
+  /// is part of the motion (a key-pose segment, whose speed at its keys
+  /// must match its neighbours') says no, and is followed at its own times.
+  virtual bool retimed_by_morph() const { return true; }
+};
+
+class RigidGuide : public GuideTrajectory {
  public:
   /// `source`'s edges join the vertices; `target_vertices` (#V by 2) are
   /// the target's positions of the same vertices; `similarity` the morph's
@@ -48,20 +68,20 @@ class RigidGuide {
   /// @throws InvalidArgumentError if the vertex counts differ.
   RigidGuide(const StickFigure& source, const std::vector<Vec2>& target_vertices,
              const SimilarityMotion& similarity);
-  ~RigidGuide();
+  ~RigidGuide() override;
   RigidGuide(RigidGuide&&) noexcept;
   RigidGuide& operator=(RigidGuide&&) noexcept;
 
   /// The guide's #V vertex positions at morph parameter u in [0, 1]; the
   /// source at 0 and the target at 1 up to rounding.
-  std::vector<Vec2> at(double u) const;
+  std::vector<Vec2> at(double u) const override;
 
   /// The morph parameter at animation time t in [0, 1] such that the guide
   /// moves evenly (equal RMS vertex displacement per equal step of eased
   /// time): the cumulative motion, sampled finely, inverted. 0 -> 0 and
   /// 1 -> 1 exactly; increasing. A guide that does not move (beyond
   /// rounding) keeps t, eased.
-  double parameter_at(double t, Easing easing = Easing::None) const;
+  double parameter_at(double t, Easing easing = Easing::None) const override;
 
  private:
   struct State;
