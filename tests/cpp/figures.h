@@ -204,4 +204,25 @@ inline StickFigure stick_man_walking() {
                    {0, -15 * d, 80 * d, -60 * d, -140 * d, 55 * d, 140 * d, 35 * d, -150 * d, -35 * d});
 }
 
+/// The stick man in pose `k` of a walk: every joint bent from the standing
+/// pose by its own sine of the pose's phase, the whole figure leaning more
+/// and moving on with each pose.
+inline std::vector<Vec2> stick_man_walk_pose(int k) {
+  constexpr double d = 3.14159265358979323846 / 180;
+  const double phase = 0.9 * k;
+  const std::array<double, 10> rest = {0, 0, 120, -30, -120, 30, 160, 10, -160, -10};
+  std::array<double, 10> bends{};
+  for (int i = 0; i < 10; ++i) bends[i] = (rest[i] + 20 * std::sin(phase + 0.7 * i)) * d;
+  return stick_man({1.5 * k, 0.3 * std::sin(phase)}, (90 + 10 * k) * d,
+                   {3, 0.8, 1.2, 1.2, 1.2, 1.2, 1.5, 1.5, 1.5, 1.5}, bends)
+      .vertices;
+}
+
+/// Poses 0 .. keys - 1 of that walk.
+inline std::vector<std::vector<Vec2>> stick_man_walk(int keys) {
+  std::vector<std::vector<Vec2>> poses;
+  for (int k = 0; k < keys; ++k) poses.push_back(stick_man_walk_pose(k));
+  return poses;
+}
+
 }  // namespace stickmorph::test

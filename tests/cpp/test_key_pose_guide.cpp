@@ -19,24 +19,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegree = kPi / 180;
 
-// The stick man (figures.h) in pose `k` of a walk: every joint bent by its
-// own sine of the pose's phase, the whole figure turned and moved on.
-std::vector<Vec2> walking_pose(int k) {
-  const double phase = 0.9 * k;
-  std::array<double, 10> bends{};
-  const std::array<double, 10> rest = {0, 0, 120, -30, -120, 30, 160, 10, -160, -10};
-  for (int i = 0; i < 10; ++i) bends[i] = (rest[i] + 20 * std::sin(phase + 0.7 * i)) * kDegree;
-  return stick_man({1.5 * k, 0.3 * std::sin(phase)}, (90 + 10 * k) * kDegree,
-                   {3, 0.8, 1.2, 1.2, 1.2, 1.2, 1.5, 1.5, 1.5, 1.5}, bends)
-      .vertices;
-}
-
-std::vector<std::vector<Vec2>> walk(int keys) {
-  std::vector<std::vector<Vec2>> poses;
-  for (int k = 0; k < keys; ++k) poses.push_back(walking_pose(k));
-  return poses;
-}
-
 const std::vector<Edge>& stick_man_edges() {
   static const std::vector<Edge> edges = stick_man_standing().edges;
   return edges;
@@ -67,7 +49,7 @@ double norm(const std::vector<Vec2>& v) { return distance(std::vector<Vec2>(v.si
 }  // namespace
 
 TEST_CASE("the key-pose guide shows every key at its time", "[key_pose_guide]") {
-  const auto keys = walk(5);
+  const auto keys = stick_man_walk(5);
   const std::vector<double> times = {0, 0.2, 0.45, 0.7, 1};
   const KeyPoseGuide guide(keys, stick_man_edges(), times);
   for (std::size_t k = 0; k < keys.size(); ++k) check_close(guide.at(times[k]), keys[k], 1e-12);
@@ -93,7 +75,7 @@ TEST_CASE("the key-pose guide shows the keys of a figure with a cycle and of two
 }
 
 TEST_CASE("the key-pose guide's velocity is continuous at interior keys", "[key_pose_guide]") {
-  const auto keys = walk(4);
+  const auto keys = stick_man_walk(4);
   const std::vector<double> times = {0, 0.3, 0.55, 1};  // uneven: the tangents weigh the spacing
   const KeyPoseGuide guide(keys, stick_man_edges(), times);
   for (int k = 1; k <= 2; ++k) {
@@ -134,7 +116,7 @@ TEST_CASE("three keys give one parabola through them", "[key_pose_guide]") {
 }
 
 TEST_CASE("a held key stops the motion there", "[key_pose_guide]") {
-  const auto keys = walk(3);
+  const auto keys = stick_man_walk(3);
   KeyPoseGuideOptions options;
   options.hold = {false, true, false};
   const KeyPoseGuide guide(keys, stick_man_edges(), {0, 0.5, 1}, options);
@@ -147,7 +129,7 @@ TEST_CASE("a held key stops the motion there", "[key_pose_guide]") {
 }
 
 TEST_CASE("a loop returns to the first key and joins itself smoothly", "[key_pose_guide]") {
-  const auto keys = walk(3);
+  const auto keys = stick_man_walk(3);
   KeyPoseGuideOptions options;
   options.loop = true;
   const KeyPoseGuide guide(keys, stick_man_edges(), {0, 1.0 / 3, 2.0 / 3}, options);
@@ -188,7 +170,7 @@ TEST_CASE("turns add up along the sequence", "[key_pose_guide]") {
 }
 
 TEST_CASE("the key-pose guide refuses bad input, naming the key or the time", "[key_pose_guide]") {
-  const auto keys = walk(3);
+  const auto keys = stick_man_walk(3);
   const std::vector<Edge>& edges = stick_man_edges();
   CHECK_THROWS_WITH(KeyPoseGuide({keys[0]}, edges, {0}), Contains("at least two keys, got 1"));
   auto short_key = keys;

@@ -1,0 +1,244 @@
+// The morph through a sequence of key poses; see key_pose_morph.h.
+#include "stickmorph/key_pose_morph.h"
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <utility>
+
+#include "stickmorph/argument_limits.h"
+#include "stickmorph/compatibility.h"
+#include "stickmorph/decomposition.h"
+#include "stickmorph/errors.h"
+#include "stickmorph/guided_morph.h"
+#include "stickmorph/internal/rigid_morph_setup.h"
+#include "stickmorph/key_pose_guide.h"
+#include "stickmorph/morph_options.h"
+#include "stickmorph/rigid_guide.h"
+#include "stickmorph/working_scale.h"
+
+namespace stickmorph {
+namespace {
+
+std::string key_name(std::size_t k) { return "key " + std::to_string(k + 1); }
+
+// One segment's stretch [t0, t1] of the sequence's guide, as the trajectory
+// its GuidedMorph follows: morph parameter u is the segment's own time, and
+// the morph does not retime it (key_pose_morph.h).
+class KeyPoseStretch : public GuideTrajectory {
+ public:
+  KeyPoseStretch(std::shared_ptr<const KeyPoseGuide> guide, double t0, double t1)
+      : guide_(std::move(guide)), t0_(t0), t1_(t1) {}
+  std::vector<Vec2> at(double u) const override {
+    // The knots themselves at the ends, not t0 + (t1 - t0), which may round.
+    if (u <= 0) return guide_->at(t0_);
+    if (u >= 1) return guide_->at(t1_);
+    return guide_->at(t0_ + u * (t1_ - t0_));
+  }
+  double parameter_at(double t, Easing) const override { return t; }
+  bool retimed_by_morph() const override { return false; }
+
+ private:
+  std::shared_ptr<const KeyPoseGuide> guide_;
+  double t0_, t1_;
+};
+
+void check_same_graph(const std::vector<StickFigure>& keys) {
+  const StickFigure& first = keys[0];
+  for (std::size_t k = 1; k < keys.size(); ++k) {
+    const StickFigure& key = keys[k];
+    if (key.vertices.size() != first.vertices.size())
+      throw InvalidArgumentError(key_name(k) + " has " + std::to_string(key.vertices.size()) +
+                                 " vertices, key 1 has " + std::to_string(first.vertices.size()));
+    if (key.edges.size() != first.edges.size())
+      throw InvalidArgumentError(key_name(k) + " has " + std::to_string(key.edges.size()) + " edges, key 1 has " +
+                                 std::to_string(first.edges.size()));
+    for (std::size_t e = 0; e < key.edges.size(); ++e)
+      if (key.edges[e] != first.edges[e])
+        throw InvalidArgumentError("edge " + std::to_string(e) + " is (" + std::to_string(first.edges[e][0]) + ", " +
+                                   std::to_string(first.edges[e][1]) + ") in key 1 and (" +
+                                   std::to_string(key.edges[e][0]) + ", " + std::to_string(key.edges[e][1]) +
+                                   ") in " + key_name(k) + ": the keys must correspond by index");
+  }
+}
+
+// N and F_k, checked.
+std::pair<int, std::vector<int>> frame_plan(const KeyPoseMorphOptions& options, std::size_t keys,
+                                            std::size_t segments) {
+  const long long minimum = static_cast<long long>(segments) + 1;
+  const long long frames =
+      options.frames.value_or(static_cast<long long>(kDefaultFramesPerSegment) * static_cast<long long>(segments) + 1);
+  if (frames < minimum || frames > kMaxMorphFrames)
+    throw InvalidArgumentError("frames must be between " + std::to_string(minimum) + " (one more than the " +
+                               std::to_string(segments) + " segments) and " + std::to_string(kMaxMorphFrames) +
+                               ", got " + std::to_string(frames));
+  const int n = int(frames);
+  std::vector<int> at;
+  if (options.keys_at.empty()) {
+    for (std::size_t k = 0; k < keys; ++k)
+      at.push_back(int(std::lround(double(k) * double(n - 1) / double(segments))));
+    return {n, at};
+  }
+  if (options.keys_at.size() != keys)
+    throw InvalidArgumentError("keys-at: one frame per key: " + std::to_string(keys) + " keys, " +
+                               std::to_string(options.keys_at.size()) + " frames");
+  if (options.keys_at[0] != 0)
+    throw InvalidArgumentError("keys-at: key 1 must be at frame 0, got " + std::to_string(options.keys_at[0]));
+  for (std::size_t k = 1; k < keys; ++k)
+    if (!(options.keys_at[k] > options.keys_at[k - 1]))
+      throw InvalidArgumentError("keys-at: the frames must increase strictly: " + key_name(k) + " at " +
+                                 std::to_string(options.keys_at[k]) + " is not after " + key_name(k - 1) + " at " +
+                                 std::to_string(options.keys_at[k - 1]));
+  const long long last = options.keys_at.back();
+  if (options.loop ? last >= frames - 1 : last != frames - 1)
+    throw InvalidArgumentError("keys-at: " + key_name(keys - 1) + " must be at frame " +
+                               (options.loop ? "below " : "") + std::to_string(frames - 1) +
+                               (options.loop ? " (with loop the last frame is key 1 again)" : " (the last frame)") +
+                               ", got " + std::to_string(last));
+  for (long long f : options.keys_at) at.push_back(int(f));
+  return {n, at};
+}
+
+}  // namespace
+
+KeyPoseMorphResult morph_key_poses(const std::vector<StickFigure>& keys, const KeyPoseMorphOptions& options) {
+  if (keys.size() < 2)
+    throw InvalidArgumentError("a key-pose sequence needs at least two keys, got " + std::to_string(keys.size()));
+  check_same_graph(keys);
+  const std::size_t count = keys.size();
+  const std::size_t segments = options.loop ? count : count - 1;
+  // The options every segment shares, checked as the pair morph checks them.
+  MorphStickFiguresOptions shared;
+  shared.method = MorphMethod::Rigid;
+  shared.steiner = options.steiner;
+  shared.weights = options.weights;
+  shared.enclosure_sides = options.enclosure_sides;
+  shared.verify = options.verify;
+  shared.frame_check = options.frame_check;
+  check_morph_options(shared);
+  if (!options.turns.empty() && options.turns.size() != segments)
+    throw InvalidArgumentError("turns: one entry per segment: " + std::to_string(segments) + " segments, " +
+                               std::to_string(options.turns.size()) + " entries");
+  for (std::size_t s = 0; s < options.turns.size(); ++s)
+    if (std::llabs(options.turns[s]) > kMaxExtraTurns)
+      throw InvalidArgumentError("turns: segment " + std::to_string(s + 1) + " asks for " +
+                                 std::to_string(options.turns[s]) + " whole turns, more than " +
+                                 std::to_string(kMaxExtraTurns) + " either way");
+  const auto [frames, key_frames] = frame_plan(options, count, segments);
+
+  // The keys at their own scale only, for now: the working scale that
+  // brings a pair into the numeric stages' range (working_scale.h) is not
+  // yet carried through a sequence.
+  for (std::size_t k = 1; k < count; ++k)
+    if (working_scale_exponent(keys[0], keys[k]) != 0)
+      throw NumericRangeError("key-pose sequences are morphed at their own scale, with coordinates between 2^-" +
+                              std::to_string(kComfortableExponent) + " and 2^" +
+                              std::to_string(kComfortableExponent) + " in magnitude; key 1 and " + key_name(k) +
+                              " are not (scale the keys)");
+
+  // Algorithm 1 once per key; each segment's pair checked (the keys must be
+  // compatible from one to the next, which makes them all compatible).
+  std::vector<Decomposition> decompositions;
+  decompositions.reserve(count);
+  for (const StickFigure& key : keys) decompositions.push_back(decompose(key));
+  std::vector<CompatiblePair> pairs;
+  pairs.reserve(segments);
+  for (std::size_t s = 0; s < segments; ++s) {
+    const std::size_t next = (s + 1) % count;
+    check_numeric_range(keys[s], keys[next], MorphMethod::Rigid);
+    try {
+      pairs.push_back(CompatiblePair::check(keys[s], decompositions[s], keys[next], decompositions[next]));
+    } catch (const IncompatibleFiguresError& error) {
+      throw IncompatibleFiguresError(error.kind(), key_name(s) + " and " + key_name(next) + ": " + error.what(),
+                                     error.vertices());
+    }
+  }
+
+  // The guide through all keys, at the sequence's times.
+  const double last = double(frames - 1);
+  std::vector<double> key_times;
+  for (int f : key_frames) key_times.push_back(double(f) / last);
+  std::vector<std::vector<Vec2>> key_vertices;
+  for (const StickFigure& key : keys) key_vertices.push_back(key.vertices);
+  KeyPoseGuideOptions guide_options;
+  guide_options.loop = options.loop;
+  guide_options.hold = options.hold;
+  guide_options.rotation = options.rotation;
+  for (long long t : options.turns) guide_options.turns.push_back(int(t));
+  const auto guide = std::make_shared<const KeyPoseGuide>(key_vertices, keys[0].edges, key_times, guide_options);
+  const std::vector<double>& knots = guide->knot_times();
+
+  FigureTriangulationOptions paper;
+  paper.method = options.steiner.value_or(SteinerMethod::Improved);
+  paper.enclosure_sides = options.enclosure_sides ? int(*options.enclosure_sides) : kDefaultEnclosureSides;
+  const WeightKind weights = options.weights.value_or(WeightKind::MeanValue);
+  const bool verify = options.verify.value_or(true);
+  const FrameCheck check = options.frame_check.value_or(FrameCheck::Certificate);
+
+  KeyPoseMorphResult result;
+  result.key_frames = key_frames;
+  result.times.resize(std::size_t(frames));
+  for (int f = 0; f < frames; ++f) result.times[std::size_t(f)] = double(f) / last;
+  const std::size_t n = keys[0].vertices.size();
+  for (std::size_t s = 0; s < segments; ++s) {
+    const std::size_t next = (s + 1) % count;
+    KeyPoseSegment segment;
+    segment.from_key = int(s);
+    segment.to_key = int(next);
+    segment.first_frame = key_frames[s];
+    segment.last_frame = next == 0 ? frames - 1 : key_frames[next];
+    const RotationDirection direction = options.rotation.empty() ? RotationDirection::Short : options.rotation[s];
+    const int extra_turns = options.turns.empty() ? 0 : int(options.turns[s]);
+    const CompatiblePair& pair = pairs[s];
+    const SimilarityMotion similarity =
+        fit_similarity(pair.source().vertices, pair.target().vertices, direction, extra_turns);
+    segment.stats.similarity = similarity;
+    const double t0 = knots[s], t1 = knots[s + 1];
+    GuidedMorph morph = internal::prepare_guided_morph(
+        pair, similarity,
+        [&]() -> std::unique_ptr<const GuideTrajectory> { return std::make_unique<const KeyPoseStretch>(guide, t0, t1); },
+        paper, weights, Easing::None, segment.stats);
+    const std::string context =
+        "segment " + std::to_string(s + 1) + " (" + key_name(s) + " to " + key_name(next) + "), ";
+    const int span = segment.last_frame - segment.first_frame;
+    const auto start = std::chrono::steady_clock::now();
+    // Each key once: a segment after the first starts at the frame the one
+    // before ended on, which is that key exactly in both.
+    for (int f = segment.first_frame + (s == 0 ? 0 : 1); f <= segment.last_frame; ++f) {
+      const double t = f == segment.last_frame ? 1.0 : double(f - segment.first_frame) / double(span);
+      GuidedFrame frame;
+      try {
+        frame = morph.frame(t, f, verify, context, check);
+      } catch (const InvalidArgumentError& error) {
+        throw InternalError(std::string("morph_key_poses: the engine refused its own intermediate result: ") +
+                            error.what());
+      }
+      if (frame.fit == GuideFit::Exact) ++segment.stats.guide_exact_frames;
+      if (frame.fit == GuideFit::Blended) ++segment.stats.guide_blended_frames;
+      if (frame.fit == GuideFit::Barycentric) ++segment.stats.guide_barycentric_frames;
+      if (frame.refined) ++segment.stats.refined_frames;
+      result.frames.emplace_back(frame.positions.begin(), frame.positions.begin() + std::ptrdiff_t(n));
+    }
+    segment.stats.morph_ms =
+        segment.stats.factorize_ms +
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const GuidedMorphStats& guided = morph.stats();
+    segment.stats.solve_ms = guided.guide_ms + guided.solve_ms;
+    segment.stats.verify_ms = guided.verify_ms;
+    segment.stats.factorizations = guided.factorizations;
+    segment.triangulation = morph.triangulation();
+    result.segments.push_back(std::move(segment));
+  }
+  // Every key exactly at its frame: the segments' end frames are their
+  // pairs' figures (GuidedMorph), so this holds by construction; a
+  // mismatch is a bug, not a user's error.
+  for (std::size_t k = 0; k < count; ++k)
+    if (result.frames[std::size_t(key_frames[k])] != keys[k].vertices)
+      throw InternalError("morph_key_poses: frame " + std::to_string(key_frames[k]) + " is not " + key_name(k));
+  if (options.loop && result.frames.back() != keys[0].vertices)
+    throw InternalError("morph_key_poses: the loop's last frame is not key 1");
+  return result;
+}
+
+}  // namespace stickmorph

@@ -1,0 +1,92 @@
+// The morph through a sequence of key poses (issue 28): one continuous,
+// valid motion that shows key k exactly at frame F_k.
+//
+// Each segment, key s to key s + 1 (and the last key back to the first with
+// `loop`), is a rigid morph (guided_morph.h) of that compatible pair with
+// its own compatible triangulation, as the pair morph makes it
+// (internal/rigid_morph_setup.h); what joins the segments into one motion is
+// the guide they all follow: one KeyPoseGuide (key_pose_guide.h) through all
+// keys, C1 at the interior keys, each segment following its own stretch of
+// it at the sequence's own times (not retimed for even speed, which would
+// break the speed's continuity at the keys). Where every star of a frame's
+// guide is valid the frame is the guide, so the figure's velocity is
+// continuous through every key the morph meets on the guide.
+//
+// Why switching triangulations at a key is safe: a frame's validity is a
+// property of the figure alone (the figure drawn without crossings and with
+// the source's rotation system, Section 2.1), not of the triangulation that
+// made it. Both segments meeting at key k show exactly key k there (each
+// GuidedMorph's end frames are its pair's figures exactly), every frame of
+// each segment is verified (the certificate of frame_certificate.h against
+// its own triangulation, or verify_frame), and the keys are compatible with
+// each other (each consecutive pair is checked: the same rotation system
+// and the same nesting of parts), so every frame of the sequence is a valid
+// drawing of the same stick figure.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "stickmorph/figure_triangulation.h"
+#include "stickmorph/morph.h"
+#include "stickmorph/morph_stick_figures.h"
+#include "stickmorph/similarity_motion.h"
+#include "stickmorph/stick_figure.h"
+
+namespace stickmorph {
+
+/// The frames per segment that the default frame count gives: N = 49 S + 1.
+constexpr int kDefaultFramesPerSegment = 49;
+
+struct KeyPoseMorphOptions {
+  /// N, the frames of the whole sequence; default kDefaultFramesPerSegment
+  /// times the segments, plus 1.
+  std::optional<long long> frames;
+  /// F_k, the frame of every key: strictly increasing, the first 0, the
+  /// last N - 1 (below N - 1 with `loop`, whose last frame is the first key
+  /// again). Empty: F_k = round(k (N - 1) / S), S the segments.
+  std::vector<long long> keys_at;
+  /// After the last key the motion returns to the first (frame N - 1).
+  bool loop = false;
+  /// Per key (empty: none): the motion stops at that key.
+  std::vector<bool> hold;
+  /// Per segment (empty: Short and no extra turns): which way the figure
+  /// turns from a key to the next, and its extra whole turns.
+  std::vector<RotationDirection> rotation;
+  std::vector<long long> turns;
+  // As the pair morph's (MorphStickFiguresOptions), for every segment.
+  std::optional<SteinerMethod> steiner;
+  std::optional<WeightKind> weights;
+  std::optional<long long> enclosure_sides;
+  std::optional<bool> verify;
+  std::optional<FrameCheck> frame_check;
+};
+
+/// One segment: its frames [first_frame, last_frame] of the sequence, the
+/// compatible triangulation it used (output space) and what it measured.
+struct KeyPoseSegment {
+  int from_key = 0, to_key = 0;  ///< 0-based; to_key is 0 for a loop's last segment
+  int first_frame = 0, last_frame = 0;
+  FigureTriangulation triangulation;
+  MorphStickFiguresStats stats;
+};
+
+struct KeyPoseMorphResult {
+  std::vector<double> times;                ///< N times f / (N - 1)
+  std::vector<std::vector<Vec2>> frames;    ///< N frames of the figure's n vertices; frames[F_k] is key k exactly
+  std::vector<int> key_frames;              ///< F_k per key
+  std::vector<KeyPoseSegment> segments;     ///< S segments, in order
+};
+
+/// The morph through `keys` (K >= 2 stick figures on the same vertices and
+/// edges, made by make_stick_figure), the rigid method's motion.
+/// @throws InvalidArgumentError for fewer than two keys, keys of other
+///         vertex counts or edges (naming the key), and options out of
+///         range (naming the option and the entry);
+///         IncompatibleFiguresError naming the two keys and, as the pair
+///         check does, the vertices; NumericRangeError for keys beyond the
+///         numeric range the morph carries; VerificationError if a frame
+///         fails its exact check (naming the segment and the frame).
+KeyPoseMorphResult morph_key_poses(const std::vector<StickFigure>& keys, const KeyPoseMorphOptions& options = {});
+
+}  // namespace stickmorph
