@@ -3,7 +3,9 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <charconv>
 #include <optional>
+#include <string>
 
 #include "stickmorph/errors.h"
 
@@ -54,6 +56,7 @@ std::string usage_line(const CommandSpec& command) {
   for (std::string_view positional : command.positional_names) {
     line += " " + std::string(positional);
   }
+  if (!command.more_positionals.empty()) line += " " + std::string(command.more_positionals);
   if (!command.options.empty()) line += " [options]";
   return line;
 }
@@ -113,6 +116,9 @@ bool parse_arguments(const CommandSpec& command, const std::vector<std::string>&
   std::vector<std::string> files(command.positional_names.size());
   for (std::size_t k = 0; k < files.size(); ++k)
     app.add_option(std::string(command.positional_names[k]), files[k])->required();
+  // The positionals after those, in order (CLI11 fills the required ones first).
+  std::vector<std::string> more_files;
+  if (!command.more_positionals.empty()) app.add_option("MORE", more_files);
 
   // "-o=x.json" is "-o x.json", as "--output=x.json" is: CLI11 would take
   // "=x.json" as the value and write a file of that name.
@@ -177,8 +183,69 @@ bool parse_arguments(const CommandSpec& command, const std::vector<std::string>&
     if (files[k].empty())
       fail_usage(command, "empty file name given for " + std::string(command.positional_names[k]));
   }
+  for (const std::string& file : more_files) {
+    if (file.size() > 1 && file[0] == '-' && std::find(split.begin(), options_end, file) != options_end)
+      fail_usage(command, "unknown option " + single_quoted(file.substr(0, file.find('='))));
+    if (file.empty()) fail_usage(command, "empty file name given as argument " + std::to_string(files.size() + 1));
+    files.push_back(file);
+  }
   parsed.positional = std::move(files);
   return true;
+}
+
+const std::string* option_value(const ParsedArguments& arguments, std::string_view name) {
+  const auto it = arguments.options.find(name);
+  return it == arguments.options.end() ? nullptr : &it->second;
+}
+
+const std::string& required_option(const ParsedArguments& arguments, std::string_view command,
+                                   std::string_view name) {
+  const std::string* value = option_value(arguments, name);
+  if (value == nullptr)
+    throw InvalidArgumentError(std::string(command) + ": missing option " + std::string(name) + " (see 'stickmorph " +
+                               std::string(command) + " --help')");
+  return *value;
+}
+
+namespace {
+
+std::optional<long long> whole_number(std::string_view text) {
+  long long value = 0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, error] = std::from_chars(text.data(), end, value);
+  if (text.empty() || error != std::errc() || ptr != end) return std::nullopt;
+  return value;
+}
+
+}  // namespace
+
+std::optional<long long> integer_option(const ParsedArguments& arguments, std::string_view name) {
+  const std::string* text = option_value(arguments, name);
+  if (text == nullptr) return std::nullopt;
+  const std::optional<long long> value = whole_number(*text);
+  if (!value)
+    throw InvalidArgumentError("option " + std::string(name) + " needs a whole number, got " + single_quoted(*text));
+  return value;
+}
+
+std::vector<long long> integer_list_option(const ParsedArguments& arguments, std::string_view name) {
+  std::vector<long long> values;
+  const std::string* text = option_value(arguments, name);
+  if (text == nullptr) return values;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text->find(',', start);
+    const std::string_view entry = std::string_view(*text).substr(start, comma - start);
+    const std::optional<long long> value = whole_number(entry);
+    if (!value)
+      throw InvalidArgumentError("option " + std::string(name) + " needs whole numbers separated by commas; entry " +
+                                 std::to_string(values.size() + 1) + " is " + single_quoted(entry) + " in " +
+                                 single_quoted(*text));
+    values.push_back(*value);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return values;
 }
 
 }  // namespace stickmorph::cli

@@ -9,6 +9,7 @@
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -36,6 +37,9 @@ struct ParsedArguments {
 struct CommandSpec {
   std::string_view name;
   std::vector<std::string_view> positional_names;  ///< each one required
+  /// Further positionals the command accepts after those ("[KEY3.json ...]"
+  /// in the usage line), or empty for none.
+  std::string_view more_positionals;
   std::vector<OptionSpec> options;
   std::string_view summary;      ///< one line for the global help
   std::string_view description;  ///< paragraph for the command's help
@@ -54,6 +58,23 @@ std::string single_quoted(std::string_view text);
 
 /// The text of 'stickmorph COMMAND --help'.
 std::string command_help(const CommandSpec& command);
+
+/// The value of an option given once, or null.
+const std::string* option_value(const ParsedArguments& arguments, std::string_view name);
+
+/// The value of an option the command needs.
+/// @throws InvalidArgumentError "<command>: missing option <name> ...".
+const std::string& required_option(const ParsedArguments& arguments, std::string_view command,
+                                   std::string_view name);
+
+/// A whole number option, e.g. --frames; its range is the engine's to check
+/// (argument_limits.h), so that the CLI and the module refuse the same values.
+/// @throws InvalidArgumentError naming the option for anything but a whole number.
+std::optional<long long> integer_option(const ParsedArguments& arguments, std::string_view name);
+
+/// A comma-separated list of whole numbers, e.g. --keys-at 0,20,48.
+/// @throws InvalidArgumentError naming the option and the entry.
+std::vector<long long> integer_list_option(const ParsedArguments& arguments, std::string_view name);
 
 /// Parses a command's arguments into positionals and options. Accepts
 /// "--name value", "--name=value", "-o value", "-o=value"; "--" ends the

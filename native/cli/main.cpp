@@ -7,7 +7,6 @@
 // entry; argument checking, --help and error reporting come for free. The
 // help texts are this file's, not CLI11's, so that they stay as documented.
 #include <algorithm>
-#include <charconv>
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -29,6 +28,7 @@
 #include "stickmorph/morph_stick_figures.h"
 #include "stickmorph/svg_output.h"
 #include "argument_parsing.h"
+#include "key_pose_command.h"
 #include "output_files.h"
 
 namespace stickmorph {
@@ -38,6 +38,9 @@ using cli::CommandSpec;
 using cli::OptionSpec;
 using cli::ParsedArguments;
 using cli::command_help;
+using cli::integer_option;
+using cli::option_value;
+using cli::required_option;
 using cli::parse_arguments;
 using cli::single_quoted;
 using cli::usage_line;
@@ -101,20 +104,6 @@ int run_check(const ParsedArguments& arguments) {
 
 // -- option values ----------------------------------------------------------
 
-const std::string* option_value(const ParsedArguments& arguments, std::string_view name) {
-  const auto it = arguments.options.find(name);
-  return it == arguments.options.end() ? nullptr : &it->second;
-}
-
-const std::string& required_option(const ParsedArguments& arguments, std::string_view command,
-                                   std::string_view name) {
-  const std::string* value = option_value(arguments, name);
-  if (value == nullptr)
-    throw InvalidArgumentError(std::string(command) + ": missing option " + std::string(name) + " (see 'stickmorph " +
-                               std::string(command) + " --help')");
-  return *value;
-}
-
 Matching matching_options(const ParsedArguments& arguments, std::string_view command, CorrespondenceMode mode) {
   Matching matching;
   matching.mode = mode;
@@ -126,19 +115,6 @@ Matching matching_options(const ParsedArguments& arguments, std::string_view com
   // the engine is checked (as the CLI always reported it).
   check_pins_need_auto(matching.mode, matching.pins, OptionSpelling::CommandLine, std::string(command) + ": ");
   return matching;
-}
-
-// A whole number option, e.g. --frames; its range is the engine's to check
-// (argument_limits.h), so that the CLI and the module refuse the same values.
-std::optional<long long> integer_option(const ParsedArguments& arguments, std::string_view name) {
-  const std::string* text = option_value(arguments, name);
-  if (text == nullptr) return std::nullopt;
-  long long value = 0;
-  const char* end = text->data() + text->size();
-  const auto [ptr, error] = std::from_chars(text->data(), end, value);
-  if (error != std::errc() || ptr != end)
-    throw InvalidArgumentError("option " + std::string(name) + " needs a whole number, got " + single_quoted(*text));
-  return value;
 }
 
 FigureTriangulationOptions triangulation_options(const ParsedArguments& arguments) {
@@ -225,6 +201,7 @@ std::string morph_document(const StickFigure& source, const MorphStickFiguresRes
 }
 
 int run_morph(const ParsedArguments& arguments) {
+  if (cli::is_key_pose_run(arguments)) return cli::run_key_poses(arguments);
   const std::string& output = required_option(arguments, "morph", "--output");
   cli::OutputFiles outputs = prepare_outputs(arguments, "morph", output);
   const std::string* svg = option_value(arguments, "--svg");
@@ -335,6 +312,7 @@ const std::vector<CommandSpec>& commands() {
   static const std::vector<CommandSpec> table = {
       {"check",
        {"SOURCE.json", "TARGET.json"},
+       "",
        {{"--correspond", "", "MODE", kCorrespondHelp},
         {"--pin", "", "S:T", kPinHelp, true}},
        "decide whether two stick figures are compatible",
@@ -346,6 +324,7 @@ const std::vector<CommandSpec>& commands() {
        &run_check},
       {"triangulate",
        {"SOURCE.json", "TARGET.json"},
+       "",
        {{"--output", "-o", "OUT.json", "where to write the triangulation object (required)"},
         {"--steiner", "", "NAME", "compatible triangulation method: improved (default), sg2001 or aronov"},
         {"--enclosure-sides", "", "K", enclosure_sides_help()},
@@ -360,6 +339,7 @@ const std::vector<CommandSpec>& commands() {
        &run_triangulate},
       {"morph",
        {"SOURCE.json", "TARGET.json"},
+       "[KEY3.json ...]",
        {{"--output", "-o", "OUT.json", "where to write the morph (required)"},
         {"--frames", "", "N", frames_help()},
         {"--steiner", "", "NAME", "compatible triangulation method: improved (default), sg2001 or aronov"},
@@ -379,8 +359,12 @@ const std::vector<CommandSpec>& commands() {
          "or full (also rebuild each frame's figure and compare it with the source)"},
         {"--svg", "", "FILE", "also draw a filmstrip of about seven frames"},
         {"--svg-triangulation", "", "", "draw the triangulation under the filmstrip's figures"},
-        {"--svg-compare-linear", "", "", "draw the straight-line morph as a second filmstrip row (Figure 8d)"}},
-       "morph one stick figure into a compatible one",
+        {"--svg-compare-linear", "", "", "draw the straight-line morph as a second filmstrip row (Figure 8d)"},
+        {"--keys-at", "", "F1,...,FK",
+         "key poses: the frame of every key, increasing from 0 to N-1 (default: evenly spaced)"},
+        {"--loop", "", "", "key poses: return to the first key at the last frame, smoothly"},
+        {"--hold", "", "K1,...", "key poses: stop at these keys (numbered from 1)"}},
+       "morph one stick figure into a compatible one, or through key poses",
        "Morphs SOURCE into TARGET (Surazhsky & Gotsman 2001, Algorithm 3): both are\n"
        "embedded in one compatible triangulation of a common convex enclosure, whose\n"
        "barycentric coordinates are interpolated (Floater & Gotsman 1999). The rigid\n"
@@ -392,10 +376,18 @@ const std::vector<CommandSpec>& commands() {
        "all its triangles counter-clockwise inside the convex enclosure prove it;\n"
        "--frame-check full also rebuilds the figure); a frame that fails is refined or the\n"
        "command fails naming it. With --method linear the vertices move on straight\n"
-       "lines and the frames that self-intersect are listed in stats.invalid_frames.",
+       "lines and the frames that self-intersect are listed in stats.invalid_frames.\n"
+       "\n"
+       "Given more than two files (KEY1.json KEY2.json ... KEYK.json, the same\n"
+       "vertices and edges, each compatible with the next), or --keys-at, --loop or\n"
+       "--hold: one continuous rigid motion through every key, key k exactly at frame\n"
+       "F_k (--keys-at; default evenly spaced, N = 49 per segment + 1), its velocity\n"
+       "continuous through the keys; --rotation and --turns take one value or one per\n"
+       "segment. The output adds \"keys\" and has \"triangulations\", one per segment.",
        &run_morph},
       {"correspond",
        {"SOURCE.json", "TARGET.json"},
+       "",
        {{"--output", "-o", "OUT.json", "where to write the matched figures (required)"},
         {"--pin", "", "S:T", kPinHelp, true}},
        "match two stick figures drawn separately",

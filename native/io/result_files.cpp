@@ -277,4 +277,114 @@ std::string morph_file_json(const StickFigure& source, const std::vector<double>
   return out.finish();
 }
 
+std::string key_pose_file_json(const StickFigure& first_key, const KeyPoseMorphResult& result, bool verified) {
+  const std::size_t n = first_key.vertices.size();
+  JsonWriter out(true);
+  out.begin_object();
+  out.key("edges");
+  out.begin_array();
+  for (const Edge& e : first_key.edges) {
+    out.begin_array();
+    out.value(e[0]);
+    out.value(e[1]);
+    out.end_array();
+  }
+  out.end_array();
+  out.key("times");
+  out.begin_array();
+  for (double t : result.times) out.value(t);
+  out.end_array();
+  out.key("frames");
+  out.begin_array();
+  for (const auto& frame : result.frames) {
+    out.begin_array();
+    for (std::size_t v = 0; v < n; ++v) write_point(out, frame[v]);
+    out.end_array();
+  }
+  out.end_array();
+  out.key("keys");
+  out.begin_array();
+  for (int f : result.key_frames) {
+    out.begin_object();
+    out.key("frame");
+    out.value(f);
+    out.end_object();
+  }
+  out.end_array();
+  out.key("triangulations");
+  out.begin_array();
+  for (const KeyPoseSegment& segment : result.segments) write_triangulation(out, segment.triangulation);
+  out.end_array();
+  int steiner = 0, triangles = 0;
+  double triangulate_ms = 0, morph_ms = 0;
+  for (const KeyPoseSegment& segment : result.segments) {
+    steiner += segment.triangulation.steiner_vertices;
+    triangles += int(segment.triangulation.triangles.size());
+    triangulate_ms += segment.stats.triangulate_ms;
+    morph_ms += segment.stats.morph_ms;
+  }
+  out.key("stats");
+  out.begin_object();
+  out.key("steiner_vertices");
+  out.value(steiner);
+  out.key("triangles");
+  out.value(triangles);
+  out.key("milliseconds");
+  out.begin_object();
+  out.key("triangulate");
+  out.value(triangulate_ms);
+  out.key("morph");
+  out.value(morph_ms);
+  out.end_object();
+  out.key("method");
+  out.value("rigid");
+  out.key("verified");
+  out.value(verified);
+  out.key("segments");
+  out.begin_array();
+  for (const KeyPoseSegment& segment : result.segments) {
+    const MorphStickFiguresStats& stats = segment.stats;
+    out.begin_object();
+    out.key("keys");
+    out.begin_array();
+    out.value(segment.from_key + 1);
+    out.value(segment.to_key + 1);
+    out.end_array();
+    out.key("frames");
+    out.begin_array();
+    out.value(segment.first_frame);
+    out.value(segment.last_frame);
+    out.end_array();
+    out.key("steiner_vertices");
+    out.value(segment.triangulation.steiner_vertices);
+    out.key("triangles");
+    out.value(int(segment.triangulation.triangles.size()));
+    out.key("milliseconds");
+    out.begin_object();
+    out.key("triangulate");
+    out.value(stats.triangulate_ms);
+    out.key("morph");
+    out.value(stats.morph_ms);
+    out.end_object();
+    out.key("similarity_factored");
+    out.value(stats.similarity_factored);
+    out.key("guide_frames");
+    out.begin_object();
+    out.key("exact");
+    out.value(stats.guide_exact_frames);
+    out.key("blended");
+    out.value(stats.guide_blended_frames);
+    out.key("barycentric");
+    out.value(stats.guide_barycentric_frames);
+    out.end_object();
+    out.key("refined_frames");
+    out.value(stats.refined_frames);
+    out.end_object();
+  }
+  out.end_array();
+  out.end_object();
+  out.end_object();
+  return out.finish();
+}
+
 }  // namespace stickmorph

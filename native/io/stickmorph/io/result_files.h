@@ -8,6 +8,7 @@
 
 #include "stickmorph/figure_correspondence.h"
 #include "stickmorph/figure_triangulation.h"
+#include "stickmorph/key_pose_morph.h"
 #include "stickmorph/io/json.h"
 #include "stickmorph/morph.h"
 #include "stickmorph/similarity_motion.h"
@@ -82,5 +83,13 @@ std::string triangulation_file_json(const FigureTriangulation& triangulation);
 /// The triangulation object of both files: figure vertices, then the
 /// enclosure counter-clockwise, then Steiner vertices.
 void write_triangulation(JsonWriter& out, const FigureTriangulation& triangulation);
+
+/// The morph file of a key-pose sequence (docs/FORMAT.md, "Key poses"): the
+/// figure's edges, `times`, the frames, "keys" (each key's frame, in input
+/// order), "triangulations" (one per segment, each a triangulation object)
+/// and the stats: per segment its keys, frames, Steiner vertices,
+/// triangles, times and guide frames, and the totals.
+/// @throws InvalidArgumentError for a non-finite number (JSON has none).
+std::string key_pose_file_json(const StickFigure& first_key, const KeyPoseMorphResult& result, bool verified);
 
 }  // namespace stickmorph

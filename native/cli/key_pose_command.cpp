@@ -1,0 +1,113 @@
+// The morph command's sequence form; see key_pose_command.h.
+#include "key_pose_command.h"
+
+#include <string>
+#include <vector>
+
+#include "output_files.h"
+#include "stickmorph/compatible_triangulation.h"
+#include "stickmorph/errors.h"
+#include "stickmorph/figure_io.h"
+#include "stickmorph/frame_certificate.h"
+#include "stickmorph/io/result_files.h"
+#include "stickmorph/key_pose_morph.h"
+#include "stickmorph/morph.h"
+#include "stickmorph/similarity_motion.h"
+
+namespace stickmorph::cli {
+namespace {
+
+// The pair morph's options that a sequence does not take (yet), and why.
+struct Unsupported {
+  const char* option;
+  const char* why;
+};
+constexpr Unsupported kUnsupported[] = {
+    {"--easing", "the sequence's timing is one smooth spline through the keys; --hold K stops at key K"},
+    {"--correspond", "key poses must correspond by index (matching keys drawn separately is not built yet)"},
+    {"--svg", "the filmstrip of a sequence is not built yet"},
+    {"--svg-triangulation", "the filmstrip of a sequence is not built yet"},
+    {"--svg-compare-linear", "the filmstrip of a sequence is not built yet"},
+};
+
+// --rotation and --turns: one value for every segment, or one per segment.
+std::vector<std::string> comma_list(const std::string& text) {
+  std::vector<std::string> entries;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    entries.push_back(text.substr(start, comma - start));
+    if (comma == std::string::npos) return entries;
+    start = comma + 1;
+  }
+}
+
+}  // namespace
+
+bool is_key_pose_run(const ParsedArguments& arguments) {
+  return arguments.positional.size() > 2 || option_value(arguments, "--keys-at") ||
+         option_value(arguments, "--loop") || option_value(arguments, "--hold");
+}
+
+int run_key_poses(const ParsedArguments& arguments) {
+  const std::string& output = required_option(arguments, "morph", "--output");
+  for (const Unsupported& unsupported : kUnsupported)
+    if (option_value(arguments, unsupported.option) || arguments.repeated.count(unsupported.option))
+      throw InvalidArgumentError("morph: option " + std::string(unsupported.option) +
+                                 " is not available for key poses: " + unsupported.why);
+  if (arguments.repeated.count("--pin"))
+    throw InvalidArgumentError("morph: option --pin is not available for key poses: key poses must correspond by "
+                               "index (matching keys drawn separately is not built yet)");
+  if (const std::string* method = option_value(arguments, "--method"))
+    if (parse_morph_method(*method) != MorphMethod::Rigid)
+      throw InvalidArgumentError("morph: key poses are morphed with --method rigid only (its guide is what makes the "
+                                 "motion smooth through the keys), got " + single_quoted(*method));
+  std::vector<NamedPath> inputs;
+  for (std::size_t k = 0; k < arguments.positional.size(); ++k)
+    inputs.push_back({"KEY" + std::to_string(k + 1) + ".json", arguments.positional[k]});
+  OutputFiles outputs("morph", {{"--output", output}}, inputs);
+
+  const std::size_t keys = arguments.positional.size();
+  KeyPoseMorphOptions options;
+  options.loop = option_value(arguments, "--loop") != nullptr;
+  const std::size_t segments = options.loop ? keys : keys - 1;
+  options.frames = integer_option(arguments, "--frames");
+  options.keys_at = integer_list_option(arguments, "--keys-at");
+  const std::vector<long long> holds = integer_list_option(arguments, "--hold");
+  if (!holds.empty()) {
+    options.hold.assign(keys, false);
+    for (long long key : holds) {
+      if (key < 1 || key > static_cast<long long>(keys))
+        throw InvalidArgumentError("morph: --hold names keys 1 to " + std::to_string(keys) + ", got " +
+                                   std::to_string(key));
+      options.hold[std::size_t(key - 1)] = true;
+    }
+  }
+  if (const std::string* text = option_value(arguments, "--rotation")) {
+    const std::vector<std::string> names = comma_list(*text);
+    if (names.size() != 1 && names.size() != segments)
+      throw InvalidArgumentError("morph: --rotation takes one direction for every segment or one per segment (" +
+                                 std::to_string(segments) + "), got " + std::to_string(names.size()));
+    for (std::size_t s = 0; s < segments; ++s) options.rotation.push_back(parse_rotation_direction(names[names.size() == 1 ? 0 : s]));
+  }
+  if (option_value(arguments, "--turns")) {
+    const std::vector<long long> turns = integer_list_option(arguments, "--turns");
+    if (turns.size() != 1 && turns.size() != segments)
+      throw InvalidArgumentError("morph: --turns takes one count for every segment or one per segment (" +
+                                 std::to_string(segments) + "), got " + std::to_string(turns.size()));
+    for (std::size_t s = 0; s < segments; ++s) options.turns.push_back(turns[turns.size() == 1 ? 0 : s]);
+  }
+  if (const std::string* name = option_value(arguments, "--steiner")) options.steiner = parse_steiner_method(*name);
+  if (const std::string* name = option_value(arguments, "--weights")) options.weights = parse_weight_kind(*name);
+  options.enclosure_sides = integer_option(arguments, "--enclosure-sides");
+  if (option_value(arguments, "--no-verify")) options.verify = false;
+  if (const std::string* name = option_value(arguments, "--frame-check")) options.frame_check = parse_frame_check(*name);
+
+  std::vector<StickFigure> figures;
+  for (const std::string& path : arguments.positional) figures.push_back(read_figure_file(path));
+  const KeyPoseMorphResult result = morph_key_poses(figures, options);
+  outputs.commit({key_pose_file_json(figures[0], result, options.verify.value_or(true))});
+  return 0;
+}
+
+}  // namespace stickmorph::cli
