@@ -28,21 +28,26 @@ void write_fractions(JsonWriter& out, const std::vector<MatchedPlace>& places) {
   out.end_array();
 }
 
-void write_figure_object(JsonWriter& out, const StickFigure& figure) {
-  out.begin_object();
-  out.key("name");
-  out.value(figure.name);
-  out.key("vertices");
-  write_points(out, figure.vertices);
+// "edges": [[i, j], ...].
+void write_edges(JsonWriter& out, const std::vector<Edge>& edges) {
   out.key("edges");
   out.begin_array();
-  for (const Edge& e : figure.edges) {
+  for (const Edge& e : edges) {
     out.begin_array();
     out.value(e[0]);
     out.value(e[1]);
     out.end_array();
   }
   out.end_array();
+}
+
+void write_figure_object(JsonWriter& out, const StickFigure& figure) {
+  out.begin_object();
+  out.key("name");
+  out.value(figure.name);
+  out.key("vertices");
+  write_points(out, figure.vertices);
+  write_edges(out, figure.edges);
   out.end_object();
 }
 
@@ -71,6 +76,41 @@ void write_matching_stats(JsonWriter& out, const FigureCorrespondence& c) {
   out.value(c.residual);
   out.key("rotation_degrees");
   out.value(c.rotation_degrees);
+  out.end_object();
+}
+
+// The motion's part of a morph file: the figure's edges, the times and the
+// first n positions of every frame (frames may hold all triangulation
+// nodes; the enclosure and Steiner nodes are in the triangulation, and
+// moving them is the morph's business).
+void write_motion(JsonWriter& out, const StickFigure& figure, const std::vector<double>& times,
+                  const std::vector<std::vector<Vec2>>& frames) {
+  const std::size_t n = figure.vertices.size();
+  write_edges(out, figure.edges);
+  out.key("times");
+  out.begin_array();
+  for (double t : times) out.value(t);
+  out.end_array();
+  out.key("frames");
+  out.begin_array();
+  for (const auto& frame : frames) {
+    out.begin_array();
+    for (std::size_t v = 0; v < n; ++v) write_point(out, frame[v]);
+    out.end_array();
+  }
+  out.end_array();
+}
+
+// How the rigid method made its frames (GuideFit).
+void write_guide_frames(JsonWriter& out, int exact, int blended, int barycentric) {
+  out.key("guide_frames");
+  out.begin_object();
+  out.key("exact");
+  out.value(exact);
+  out.key("blended");
+  out.value(blended);
+  out.key("barycentric");
+  out.value(barycentric);
   out.end_object();
 }
 
@@ -147,33 +187,10 @@ std::string triangulation_file_json(const FigureTriangulation& triangulation) {
 
 std::string morph_file_json(const StickFigure& source, const std::vector<double>& times,
                             const std::vector<std::vector<Vec2>>& frames, const MorphProvenance& how) {
-  const std::size_t n = source.vertices.size();
   const FigureTriangulation* triangulation = how.triangulation;
   JsonWriter out(true);
   out.begin_object();
-  out.key("edges");
-  out.begin_array();
-  for (const Edge& e : source.edges) {
-    out.begin_array();
-    out.value(e[0]);
-    out.value(e[1]);
-    out.end_array();
-  }
-  out.end_array();
-  out.key("times");
-  out.begin_array();
-  for (double t : times) out.value(t);
-  out.end_array();
-  out.key("frames");
-  out.begin_array();
-  for (const auto& frame : frames) {
-    // Only the figure's vertices: the enclosure and Steiner nodes are in
-    // the triangulation, and moving them is the morph's business.
-    out.begin_array();
-    for (std::size_t v = 0; v < n; ++v) write_point(out, frame[v]);
-    out.end_array();
-  }
-  out.end_array();
+  write_motion(out, source, times, frames);
   if (how.correspondence) {
     out.key("correspondence");
     write_correspondence(out, *how.correspondence);
@@ -251,15 +268,7 @@ std::string morph_file_json(const StickFigure& source, const std::vector<double>
     out.key("target_center");
     write_point(out, rigid.similarity.target_center);
     out.end_object();
-    out.key("guide_frames");
-    out.begin_object();
-    out.key("exact");
-    out.value(rigid.exact_frames);
-    out.key("blended");
-    out.value(rigid.blended_frames);
-    out.key("barycentric");
-    out.value(rigid.barycentric_frames);
-    out.end_object();
+    write_guide_frames(out, rigid.exact_frames, rigid.blended_frames, rigid.barycentric_frames);
     out.end_object();
   }
   if (how.correspondence) {
@@ -278,30 +287,9 @@ std::string morph_file_json(const StickFigure& source, const std::vector<double>
 }
 
 std::string key_pose_file_json(const StickFigure& first_key, const KeyPoseMorphResult& result, bool verified) {
-  const std::size_t n = first_key.vertices.size();
   JsonWriter out(true);
   out.begin_object();
-  out.key("edges");
-  out.begin_array();
-  for (const Edge& e : first_key.edges) {
-    out.begin_array();
-    out.value(e[0]);
-    out.value(e[1]);
-    out.end_array();
-  }
-  out.end_array();
-  out.key("times");
-  out.begin_array();
-  for (double t : result.times) out.value(t);
-  out.end_array();
-  out.key("frames");
-  out.begin_array();
-  for (const auto& frame : result.frames) {
-    out.begin_array();
-    for (std::size_t v = 0; v < n; ++v) write_point(out, frame[v]);
-    out.end_array();
-  }
-  out.end_array();
+  write_motion(out, first_key, result.times, result.frames);
   out.key("keys");
   out.begin_array();
   for (int f : result.key_frames) {
@@ -368,15 +356,7 @@ std::string key_pose_file_json(const StickFigure& first_key, const KeyPoseMorphR
     out.end_object();
     out.key("similarity_factored");
     out.value(stats.similarity_factored);
-    out.key("guide_frames");
-    out.begin_object();
-    out.key("exact");
-    out.value(stats.guide_exact_frames);
-    out.key("blended");
-    out.value(stats.guide_blended_frames);
-    out.key("barycentric");
-    out.value(stats.guide_barycentric_frames);
-    out.end_object();
+    write_guide_frames(out, stats.guide_exact_frames, stats.guide_blended_frames, stats.guide_barycentric_frames);
     out.key("refined_frames");
     out.value(stats.refined_frames);
     out.end_object();
