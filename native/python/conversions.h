@@ -66,6 +66,11 @@ std::vector<int> to_corners(py::handle object, std::size_t vertex_count);
 sm::StickFigure make_figure(py::handle vertices, py::handle edges, const std::string& vertices_name,
                             const std::string& edges_name);
 
+/// One figure of several (a pair's source, a sequence's key k), validated;
+/// a defect's message starts with "<role>: " and the error carries the role.
+sm::StickFigure make_named_figure(py::handle vertices, py::handle edges, const std::string& vertices_name,
+                                  const std::string& edges_name, const std::string& role);
+
 /// The source and target figures of a pair, validated source first; a
 /// defect says which figure it is in.
 std::pair<sm::StickFigure, sm::StickFigure> make_figure_pair(const py::object& source_vertices,

@@ -54,4 +54,5 @@ PYBIND11_MODULE(stickmorph, m) {
   stickmorph::python::bind_triangulation(m);
   stickmorph::python::bind_options(m);
   stickmorph::python::bind_morph(m);
+  stickmorph::python::bind_key_poses(m);
 }

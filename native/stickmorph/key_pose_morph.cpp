@@ -81,18 +81,18 @@ std::pair<int, std::vector<int>> frame_plan(const KeyPoseMorphOptions& options, 
     return {n, at};
   }
   if (options.keys_at.size() != keys)
-    throw InvalidArgumentError("keys-at: one frame per key: " + std::to_string(keys) + " keys, " +
+    throw InvalidArgumentError("one key frame per key: " + std::to_string(keys) + " keys, " +
                                std::to_string(options.keys_at.size()) + " frames");
   if (options.keys_at[0] != 0)
-    throw InvalidArgumentError("keys-at: key 1 must be at frame 0, got " + std::to_string(options.keys_at[0]));
+    throw InvalidArgumentError("key 1 must be at frame 0, got " + std::to_string(options.keys_at[0]));
   for (std::size_t k = 1; k < keys; ++k)
     if (!(options.keys_at[k] > options.keys_at[k - 1]))
-      throw InvalidArgumentError("keys-at: the frames must increase strictly: " + key_name(k) + " at " +
+      throw InvalidArgumentError("the key frames must increase strictly: " + key_name(k) + " at " +
                                  std::to_string(options.keys_at[k]) + " is not after " + key_name(k - 1) + " at " +
                                  std::to_string(options.keys_at[k - 1]));
   const long long last = options.keys_at.back();
   if (options.loop ? last >= frames - 1 : last != frames - 1)
-    throw InvalidArgumentError("keys-at: " + key_name(keys - 1) + " must be at frame " +
+    throw InvalidArgumentError(key_name(keys - 1) + " must be at frame " +
                                (options.loop ? "below " : "") + std::to_string(frames - 1) +
                                (options.loop ? " (with loop the last frame is key 1 again)" : " (the last frame)") +
                                ", got " + std::to_string(last));

@@ -1,0 +1,77 @@
+"""stickmorph.morph_key_poses (issue 28): the module's form of `stickmorph morph KEY1.json ...
+KEYK.json`, the same engine entry: the same frames bit for bit, and every bad argument a typed
+ValueError naming the key, the frame or the argument."""
+import json
+import subprocess
+
+import numpy as np
+import pytest
+
+import stickmorph
+from conftest import load_script
+
+kpc = load_script("key_pose_corpus")
+sm = load_script("sequence_motion")
+
+
+@pytest.fixture(scope="module")
+def sequence(cli, tmp_path_factory):
+    folder = tmp_path_factory.mktemp("key_poses")
+    assert kpc.main([str(folder), "--build-dir", str(cli.parent), "--per-kind", "1"]) == 0
+    entry = next(e for e in json.loads((folder / "manifest.json").read_text()) if len(e["keys"]) >= 3)
+    paths = [folder / name for name in entry["keys"]]
+    docs = [json.loads(p.read_text()) for p in paths]
+    return paths, [d["vertices"] for d in docs], docs[0]["edges"]
+
+
+def test_the_module_and_the_cli_give_the_same_motion(cli, sequence, tmp_path):
+    paths, keys, edges = sequence
+    result = stickmorph.morph_key_poses(keys, edges, frames=61, keys_at=[0, 25, 60])
+    assert result["frames"].shape == (61, len(keys[0]), 2)
+    assert result["keys_at"] == [0, 25, 60]
+    assert [(s["from_key"], s["to_key"], s["first_frame"], s["last_frame"]) for s in result["segments"]] == \
+        [(0, 1, 0, 25), (1, 2, 25, 60)]
+    for k, f in enumerate(result["keys_at"]):
+        assert np.array_equal(result["frames"][f], np.asarray(keys[k], dtype=float))
+    out = tmp_path / "cli.json"
+    run = subprocess.run([str(cli), "morph", *map(str, paths), "-o", str(out), "--frames", "61", "--keys-at", "0,25,60"],
+                         capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stderr
+    assert np.array_equal(np.asarray(json.loads(out.read_text())["frames"]), result["frames"])
+    m = sm.measure(result["frames"], [np.asarray(k, dtype=float) for k in keys], [tuple(e) for e in edges],
+                   result["keys_at"])
+    assert m["invalid_frames"] == [] and m["key_error"] == 0
+
+
+def test_loop_hold_and_one_rotation_for_every_segment(sequence):
+    _, keys, edges = sequence
+    looped = stickmorph.morph_key_poses(keys, edges, loop=True, rotation="short", turns=0)
+    assert looped["keys_at"] == [0, 49, 98] and len(looped["segments"]) == 3
+    assert np.array_equal(looped["frames"][-1], np.asarray(keys[0], dtype=float))
+    held = stickmorph.morph_key_poses(keys, edges, hold=[False, True, False])
+    steps = np.linalg.norm(np.diff(held["frames"].reshape(len(held["frames"]), -1), axis=0), axis=1)
+    assert steps[48] < 0.05 * steps.mean()
+
+
+def test_bad_arguments_are_typed_errors_naming_what(sequence):
+    _, keys, edges = sequence
+    with pytest.raises(stickmorph.InvalidArgumentError, match="at least two keys, got 1"):
+        stickmorph.morph_key_poses(keys[:1], edges)
+    with pytest.raises(stickmorph.InvalidArgumentError, match="key 3 at 5 is not after key 2 at 5"):
+        stickmorph.morph_key_poses(keys, edges, frames=20, keys_at=[0, 5, 5])
+    with pytest.raises(stickmorph.InvalidArgumentError, match="hold: one entry per key"):
+        stickmorph.morph_key_poses(keys, edges, hold=[True])
+    with pytest.raises(stickmorph.InvalidArgumentError, match="rotation: one entry per segment"):
+        stickmorph.morph_key_poses(keys, edges, rotation=["short", "ccw", "cw"])
+    with pytest.raises(stickmorph.InvalidArgumentError, match="frames must be an integer"):
+        stickmorph.morph_key_poses(keys, edges, frames=1.5)
+    collapsed = [list(map(list, k)) for k in keys]
+    collapsed[1][1] = collapsed[1][0]
+    with pytest.raises(stickmorph.InvalidFigureError, match="^key 2: ") as error:
+        stickmorph.morph_key_poses(collapsed, edges)
+    assert error.value.role == "key 2"
+    mirrored = [k for k in keys]
+    mirrored[2] = [[-x, y] for x, y in keys[2]]
+    with pytest.raises(stickmorph.IncompatibleFiguresError, match="key 2 and key 3"):
+        stickmorph.morph_key_poses(mirrored, edges)
+    assert issubclass(stickmorph.InvalidArgumentError, ValueError)
