@@ -101,6 +101,7 @@
 #include "stickmorph/figure_io.h"
 #include "stickmorph/json.h"
 #include "stickmorph/morph_stick_figures.h"
+#include "stickmorph/working_scale.h"
 
 using namespace stickmorph;
 
@@ -337,6 +338,24 @@ void morph_matched(const PairInput& input, const FigureCorrespondence& c);
 // with a VerificationError: the dummies it places on the other figure's
 // edges (a + f (b - a), f from arc length) cannot then be told apart in
 // double precision. Above this resolution a VerificationError is a finding.
+// The ratio of the two figures' sizes (the larger side of each bounding
+// box), as the rigid method's range check measures it; 1 when either is a
+// single point.
+double size_ratio(const StickFigure& a, const StickFigure& b) {
+  const auto size = [](const StickFigure& figure) {
+    double low[2] = {figure.vertices[0][0], figure.vertices[0][1]}, high[2] = {low[0], low[1]};
+    for (const Vec2& p : figure.vertices)
+      for (int c = 0; c < 2; ++c) {
+        low[c] = std::min(low[c], p[c]);
+        high[c] = std::max(high[c], p[c]);
+      }
+    return 2 * std::max(high[0] / 2 - low[0] / 2, high[1] / 2 - low[1] / 2);  // halves: no overflow
+  };
+  const double sa = size(a), sb = size(b);
+  if (sa == 0 || sb == 0) return 1;
+  return std::max(sa / sb, sb / sa);
+}
+
 bool below_resolution(const StickFigure& figure) {
   if (figure.vertices.size() < 2) return false;
   double lo[2] = {figure.vertices[0][0], figure.vertices[0][1]}, hi[2] = {lo[0], lo[1]};
@@ -434,6 +453,14 @@ void correspond_pair(const PairInput& input) {
     throw;
   } catch (const InternalError&) {
     throw;
+  } catch (const NumericRangeError& error) {
+    // The rigid method's documented limit (working_scale.h): figures whose
+    // sizes differ by more than kMaxRigidSizeRatio are refused before any
+    // work. Below the limit the refusal is a finding.
+    if (size_ratio(c.source, c.target) <= kMaxRigidSizeRatio)
+      fuzz::report_finding(std::string("a matchable pair within the rigid method's size ratio, but "
+                                       "morph_stick_figures refused its range: ") + error.what());
+    fuzz::trace(std::string("beyond the size ratio: ") + error.what());
   } catch (const Error& error) {
     fuzz::report_finding(std::string("a matchable pair, but morph_stick_figures threw: ") + error.what());
   }
