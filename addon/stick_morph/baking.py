@@ -78,19 +78,30 @@ def world_matrix(obj, depsgraph=None):
     return matrix
 
 
+def _world_coords(points, matrix):
+    """(V, 3) float64 world coordinates of a collection with .co (mesh
+    vertices, a shape key's points) under a (4, 4) world matrix."""
+    co = np.empty(len(points) * 3, dtype=np.float32)
+    points.foreach_get("co", co)
+    local = co.reshape(-1, 3).astype(np.float64)
+    # A non-finite coordinate stays non-finite here and is reported, naming
+    # the object and the vertex, by core's validation; numpy need not warn.
+    with np.errstate(invalid="ignore", over="ignore"):
+        return local @ matrix[:3, :3].T + matrix[:3, 3]
+
+
+def shape_key_world(obj, block, depsgraph=None):
+    """(V, 3) float64 world coordinates of a shape key's own shape (the
+    mesh at that key alone, value 1), placed like mesh_world_data."""
+    return _world_coords(block.data, world_matrix(obj, depsgraph))
+
+
 def mesh_world_data(obj, depsgraph=None):
     """(V, 3) float64 world coordinates, (E, 2) int64 edges and the face count
     of a mesh object's own mesh (no modifiers, no shape keys: the basis),
     placed by the object's evaluated world matrix (world_matrix)."""
     mesh = obj.data
-    co = np.empty(len(mesh.vertices) * 3, dtype=np.float32)
-    mesh.vertices.foreach_get("co", co)
-    local = co.reshape(-1, 3).astype(np.float64)
-    matrix = world_matrix(obj, depsgraph)
-    # A non-finite coordinate stays non-finite here and is reported, naming
-    # the object and the vertex, by core's validation; numpy need not warn.
-    with np.errstate(invalid="ignore", over="ignore"):
-        world = local @ matrix[:3, :3].T + matrix[:3, 3]
+    world = _world_coords(mesh.vertices, world_matrix(obj, depsgraph))
     edges = np.empty(len(mesh.edges) * 2, dtype=np.int32)
     mesh.edges.foreach_get("vertices", edges)
     return world, edges.reshape(-1, 2).astype(np.int64), len(mesh.polygons)
@@ -350,6 +361,31 @@ def previous_results(source_name, target_name):
             and obj.get(SOURCE) == source_name and obj.get(TARGET) == target_name]
 
 
+def add_result_object(context, created, name, frames_world, edges, origin, frame_start, settings, size, tags,
+                      report_progress=None):
+    """A new object `name` (recorded in created) in the context's collection:
+    a mesh with the given edges, located at origin, holding the frames
+    (world space, (N, V, 3)) as absolute shape keys from frame_start, with
+    the tubes if settings.renderable (radius settings.tube_radius of size)
+    and the custom properties `tags`. The caller removes `created` on failure."""
+    collection = context.collection or context.scene.collection
+    frames_local = np.asarray(frames_world, dtype=np.float64) - origin
+    mesh = _new_mesh(name, frames_local[0], edges)
+    obj = bpy.data.objects.new(name, mesh)
+    created.objects.append(obj)
+    created.names[obj] = name
+    obj.location = origin
+    for key, value in tags.items():
+        obj[key] = value
+    collection.objects.link(obj)
+    bake_absolute_keys(obj, frames_local, frame_start, report_progress)
+    if settings.renderable:
+        group, made = add_tubes(obj, core.tube_radius(size, settings.tube_radius))
+        if made:
+            created.node_group = group
+    return obj
+
+
 def build_result(context, source, target, prepared, morph, settings, report_progress=None):
     """Creates the result (and helper) objects from a computed morph, as
     settings (a core.BakeSettings) say: frame_start, renderable, tube_radius,
@@ -360,25 +396,13 @@ def build_result(context, source, target, prepared, morph, settings, report_prog
     name = core.result_name(source.name, target.name)
     origin = prepared.plane.origin
     try:
-        frames_local = morph.frames_world - origin
         # The matched figure's m vertices and edges (by index, the source's).
-        mesh = _new_mesh(name, frames_local[0], prepared.edges)
+        obj = add_result_object(context, created, name, morph.frames_world, prepared.edges, origin,
+                                settings.frame_start, settings, prepared.size,
+                                {ROLE: "result", SOURCE: source.name, TARGET: target.name}, report_progress)
         if prepared.matching.matched:
-            _add_vertex_attribute(mesh, SOURCE_VERTEX_ATTRIBUTE, prepared.matching.source_vertex)
-            _add_vertex_attribute(mesh, TARGET_VERTEX_ATTRIBUTE, prepared.matching.target_vertex)
-        obj = bpy.data.objects.new(name, mesh)
-        created.objects.append(obj)
-        created.names[obj] = name
-        obj.location = origin
-        obj[ROLE] = "result"
-        obj[SOURCE] = source.name
-        obj[TARGET] = target.name
-        collection.objects.link(obj)
-        bake_absolute_keys(obj, frames_local, settings.frame_start, report_progress)
-        if settings.renderable:
-            group, made = add_tubes(obj, core.tube_radius(prepared.size, settings.tube_radius))
-            if made:
-                created.node_group = group
+            _add_vertex_attribute(obj.data, SOURCE_VERTEX_ATTRIBUTE, prepared.matching.source_vertex)
+            _add_vertex_attribute(obj.data, TARGET_VERTEX_ATTRIBUTE, prepared.matching.target_vertex)
         if settings.show_triangulation and morph.triangulation is not None:
             source_nodes, target_nodes, triangles = core.triangulation_world(morph.triangulation, prepared)
             helper_mesh = bpy.data.meshes.new(name + "_triangulation")
@@ -401,6 +425,34 @@ def build_result(context, source, target, prepared, morph, settings, report_prog
         created.remove()
         raise
     return obj, created
+
+
+def results_tagged(role, key, value):
+    """The objects a bake made with ROLE `role` and the custom property key = value."""
+    return [obj for obj in bpy.data.objects if obj.get(ROLE) == role and obj.get(key) == value]
+
+
+def build_tagged_result(context, name, frames_world, edges, origin, frame_start, settings, size, tags):
+    """(object, Created): add_result_object, everything removed again if it fails."""
+    created = Created()
+    try:
+        obj = add_result_object(context, created, name, frames_world, edges, origin, frame_start, settings,
+                                size, tags)
+    except BaseException:
+        created.remove()
+        raise
+    return obj, created
+
+
+def replace_previous(previous, created):
+    """Removes the previous results and gives the new objects their plain
+    names, which the previous ones held."""
+    for obj in previous:
+        remove_result_object(obj)
+    for obj, name in created.names.items():
+        if obj.name != name and name not in bpy.data.objects:
+            obj.name = name
+            obj.data.name = name
 
 
 def select_only(context, obj):

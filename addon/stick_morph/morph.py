@@ -15,7 +15,7 @@ from .correspondence import (_BY_INDEX, CORRESPONDENCES, Matching, _names, check
                              compare_edge_sets, matched_heights, read_pins)
 from .messages import engine_error_message, match_error_message
 from .native import load_engine, option_methods
-from .plane import Plane, fit_plane, planarity_deviation, project, unproject
+from .plane import Plane, check_planarity, fit_plane, project, unproject
 from .timing import EASINGS, RIGID_EASINGS, ease, ease_sample_indices, engine_frame_count, frame_list
 
 # The add-on's motion modes and rotation directions; the engine's names
@@ -81,6 +81,25 @@ class MorphResult:
     invalid_frames: list = field(default_factory=list)
 
 
+def refuse_faces(name: str, faces: int) -> None:
+    """Raises StickMorphError if the mesh `name` has faces."""
+    if faces:
+        raise StickMorphError(
+            f"'{name}' has {faces} face{'s' if faces != 1 else ''}; Stick Morph needs "
+            "edge-only meshes (in Edit Mode: Delete > Only Faces)")
+
+
+def refuse_non_finite(name: str, world: np.ndarray) -> None:
+    """Raises StickMorphError naming the first vertex of `name` with a
+    non-finite coordinate."""
+    bad = np.flatnonzero(~np.isfinite(world).all(axis=1))
+    if len(bad):
+        raise StickMorphError(
+            f"'{name}': vertex {int(bad[0])} has a non-finite coordinate "
+            f"({', '.join(repr(float(c)) for c in world[bad[0]])})"
+            + (f" and {len(bad) - 1} more vertices too" if len(bad) > 1 else ""))
+
+
 def prepare_pair(source_world, source_edges, source_faces: int, source_name: str,
                  target_world, target_edges, target_faces: int, target_name: str,
                  settings: BakeSettings, source_groups=None, target_groups=None) -> PreparedPair:
@@ -100,10 +119,7 @@ def prepare_pair(source_world, source_edges, source_faces: int, source_name: str
     target_edges = np.asarray(target_edges, dtype=np.int64).reshape(-1, 2)
     source_groups, target_groups = dict(source_groups or {}), dict(target_groups or {})
     for name, faces in ((source_name, source_faces), (target_name, target_faces)):
-        if faces:
-            raise StickMorphError(
-                f"'{name}' has {faces} face{'s' if faces != 1 else ''}; Stick Morph needs "
-                "edge-only meshes (in Edit Mode: Delete > Only Faces)")
+        refuse_faces(name, faces)
     if setting == "INDEX":
         # Pins only steer a matching; by index they would silently do
         # nothing, and a user who made them meant the meshes to be matched.
@@ -128,30 +144,14 @@ def prepare_pair(source_world, source_edges, source_faces: int, source_name: str
     pins = () if setting == "INDEX" else read_pins(source_groups, target_groups, source_name, target_name)
     check_pins(pins, source_edges, target_edges, len(source_world), len(target_world), source_name, target_name)
     for name, world in ((source_name, source_world), (target_name, target_world)):
-        bad = np.flatnonzero(~np.isfinite(world).all(axis=1))
-        if len(bad):
-            raise StickMorphError(
-                f"'{name}': vertex {int(bad[0])} has a non-finite coordinate "
-                f"({', '.join(repr(float(c)) for c in world[bad[0]])})"
-                + (f" and {len(bad) - 1} more vertices too" if len(bad) > 1 else ""))
+        refuse_non_finite(name, world)
 
     fitted = fit_plane(source_world, target_world, plane)
     source_xy, source_h = project(source_world, fitted)
     target_xy, target_h = project(target_world, fitted)
     both = np.vstack([source_world, target_world])
     size = float(np.linalg.norm(both.max(axis=0) - both.min(axis=0)))
-    worst = (0.0, -1, source_name)
-    for name, heights in ((source_name, source_h), (target_name, target_h)):
-        deviation, vertex = planarity_deviation(heights)
-        if deviation > worst[0]:
-            worst = (deviation, vertex, name)
-    limit = planarity_tolerance * size
-    if worst[0] > limit:
-        raise StickMorphError(
-            f"the meshes are not planar: vertex {worst[1]} of '{worst[2]}' is {worst[0]:.6g} "
-            f"away from {fitted.describe()} (largest deviation {worst[0]:.6g}; allowed "
-            f"{limit:.3g}, {planarity_tolerance:g} of the size {size:.6g})"
-            + ("" if plane == "AUTO" else "; try plane AUTO"))
+    check_planarity(((source_name, source_h), (target_name, target_h)), size, planarity_tolerance, fitted, plane)
 
     def by_index(why):
         # The source's edges are the figure's (the target's are the same

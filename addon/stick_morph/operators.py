@@ -198,13 +198,8 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
                                                   report_progress=frame_done)
         except Exception as error:  # build_result removed what it made
             raise StickMorphError(f"building the result failed: {error}") from error
-        for obj in previous:
-            baking.remove_result_object(obj)
         # With the previous result gone, the new one takes the plain names.
-        for obj, name in created.names.items():
-            if obj.name != name and name not in bpy.data.objects:
-                obj.name = name
-                obj.data.name = name
+        baking.replace_previous(previous, created)
         if settings.set_frame_range:
             context.scene.frame_start = settings.frame_start
             context.scene.frame_end = settings.frame_start + count - 1

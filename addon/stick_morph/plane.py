@@ -49,10 +49,16 @@ def _canonical_sign(vector: np.ndarray) -> np.ndarray:
 
 
 def fit_plane(source_world: np.ndarray, target_world: np.ndarray, plane: str = "AUTO") -> Plane:
-    """The common plane of both figures.
+    """The common plane of both figures (fit_plane_of for two)."""
+    return fit_plane_of([source_world, target_world], plane)
 
-    AUTO: the normal is the smallest right-singular vector of both point sets,
-    each centred on its own centroid, so that two figures in parallel planes
+
+def fit_plane_of(figures, plane: str = "AUTO") -> Plane:
+    """The common plane of one or more figures ((V_k, 3) world points each):
+    of a pair (fit_plane) or of the K key poses of a sequence.
+
+    AUTO: the normal is the smallest right-singular vector of all point sets,
+    each centred on its own centroid, so that figures in parallel planes
     (side by side at different depths) share the right normal. The normal
     points to the same side as the nearest axis plane's (XY: +Z, XZ: -Y, YZ:
     +X), and u is that plane's u axis projected into the fitted plane. If all
@@ -61,16 +67,14 @@ def fit_plane(source_world: np.ndarray, target_world: np.ndarray, plane: str = "
     """
     if plane not in PLANES:
         raise StickMorphError(f"unknown plane {plane!r} (choose one of {', '.join(PLANES)})")
-    source_world = np.asarray(source_world, dtype=np.float64).reshape(-1, 3)
-    target_world = np.asarray(target_world, dtype=np.float64).reshape(-1, 3)
-    both = np.vstack([source_world, target_world])
+    figures = [np.asarray(world, dtype=np.float64).reshape(-1, 3) for world in figures]
+    both = np.vstack(figures)
     origin = both.mean(axis=0) if len(both) else np.zeros(3)
     if plane != "AUTO":
         u, v = (np.array(a) for a in _AXIS_PLANES[plane])
         return Plane(origin, u, v, np.cross(u, v), plane)
 
-    centred = np.vstack([source_world - source_world.mean(axis=0),
-                         target_world - target_world.mean(axis=0)])
+    centred = np.vstack([world - world.mean(axis=0) for world in figures if len(world)] or [np.zeros((0, 3))])
     _, singular, vt = np.linalg.svd(centred, full_matrices=True)
     largest = singular[0] if len(singular) else 0.0
     if largest == 0.0:
@@ -126,3 +130,22 @@ def planarity_deviation(heights: np.ndarray) -> tuple[float, int]:
     deviations = np.abs(heights - heights.mean())
     k = int(np.argmax(deviations))
     return float(deviations[k]), k
+
+
+def check_planarity(named_heights, size: float, tolerance: float, fitted: Plane, plane: str) -> None:
+    """Raises StickMorphError naming the mesh and the vertex farthest from its
+    own plane (planarity_deviation) if that is more than tolerance * size.
+    named_heights: (object name, heights) of every figure; plane: the
+    setting (AUTO, XY, ...) that chose fitted."""
+    worst = (0.0, -1, named_heights[0][0] if named_heights else "")
+    for name, heights in named_heights:
+        deviation, vertex = planarity_deviation(heights)
+        if deviation > worst[0]:
+            worst = (deviation, vertex, name)
+    limit = tolerance * size
+    if worst[0] > limit:
+        raise StickMorphError(
+            f"the meshes are not planar: vertex {worst[1]} of '{worst[2]}' is {worst[0]:.6g} "
+            f"away from {fitted.describe()} (largest deviation {worst[0]:.6g}; allowed "
+            f"{limit:.3g}, {tolerance:g} of the size {size:.6g})"
+            + ("" if plane == "AUTO" else "; try plane AUTO"))
