@@ -31,14 +31,16 @@ _modules = ()
 
 def _menu(self, context):
     self.layout.operator("object.stick_morph_bake")
+    self.layout.operator("object.stick_morph_bake_sequence")
+    self.layout.operator("object.stick_morph_rebake_shape_keys")
 
 
 def register():
     global _modules
     import bpy
     # None of these import numpy or the native module at import time.
-    from . import helpers, operators, preferences, ui
-    _modules = (preferences, operators, ui)
+    from . import helpers, operators, preferences, sequence_operators, ui
+    _modules = (preferences, operators, sequence_operators, ui)
     for module in _modules:
         module.register()
     bpy.types.VIEW3D_MT_object.append(_menu)

@@ -16,7 +16,7 @@ import bpy
 
 from .common import StickMorphError, pin_names, property_applies
 from .helpers import dependency_status, edited_meshes, resolve_pair
-from .properties import OPTION_NAMES
+from .properties import OPTION_NAMES, REBAKE_OPTIONS, SEQUENCE_OPTIONS
 
 # Longest label of a property-split row that 3.4's default sidebar shows in
 # full: "Weights" and "Steiner" were, "Enclos…" (Enclosure Sides) was not
@@ -190,6 +190,7 @@ class VIEW3D_PT_stick_morph(bpy.types.Panel):
         op.frame_start = settings.frame_start
         for name in OPTION_NAMES:
             setattr(op, name, getattr(settings, name))
+        draw_sequence_buttons(layout.column(align=True), settings)
 
         if settings.last_result:
             box = layout.box()
@@ -255,7 +256,81 @@ def draw_operator(layout, op):
     draw_rows(layout, op, ADVANCED_SPLIT, ADVANCED_FULL, ADVANCED_LABELLED)
 
 
-classes = (VIEW3D_PT_stick_morph, VIEW3D_PT_stick_morph_pins, VIEW3D_PT_stick_morph_advanced)
+# ------------------------------------------------------------ key poses ----
+
+
+def draw_sequence_buttons(layout, settings):
+    """Bake Key Poses and Rebake Shape Keys, next to the Bake button, with
+    the scene's options (the Key Poses sub-panel holds their own)."""
+    op = layout.operator("object.stick_morph_bake_sequence", icon="ANIM")
+    op.collection = settings.key_collection.name if settings.key_collection else ""
+    op.frame_step = settings.frame_step
+    op.loop = settings.loop
+    op.hold = settings.hold
+    for name in SEQUENCE_OPTIONS:
+        setattr(op, name, getattr(settings, name))
+    op = layout.operator("object.stick_morph_rebake_shape_keys", icon="SHAPEKEY_DATA")
+    op.hold = settings.hold
+    for name in REBAKE_OPTIONS:
+        setattr(op, name, getattr(settings, name))
+
+
+class VIEW3D_PT_stick_morph_key_poses(bpy.types.Panel):
+    """Key poses: one morph through several edge meshes, or through a mesh's pose-to-pose shape keys"""
+    bl_label = "Key Poses"
+    bl_idname = "VIEW3D_PT_stick_morph_key_poses"
+    bl_space_type = "VIEW_3D"
+    bl_region_type = "UI"
+    bl_category = "Stick Morph"
+    bl_parent_id = "VIEW3D_PT_stick_morph"
+
+    def draw(self, context):
+        layout = self.layout
+        layout.use_property_decorate = False
+        settings = context.scene.stick_morph
+        layout.label(text="Keys (empty: selection by name):")
+        layout.prop(settings, "key_collection", text="")
+        column = layout.column()
+        column.prop(settings, "frame_step")
+        column.prop(settings, "loop")
+        column.prop(settings, "hold")
+        obj = context.active_object
+        if obj is not None and obj.type == "MESH":
+            layout.label(text=f"Key frame of '{obj.name}' (0: auto):")
+            layout.prop(obj, "stick_morph_key_frame", text="")
+        draw_sequence_buttons(layout.column(align=True), settings)
+
+
+def draw_sequence_operator(layout, op):
+    """The Adjust Last Operation panel of Bake Key Poses."""
+    layout.use_property_decorate = False
+    column = layout.column()
+    column.use_property_split = True
+    for name in ("collection", "frame_start", "frame_step"):
+        column.prop(op, name)
+    layout.prop(op, "loop")
+    layout.prop(op, "hold")
+    draw_rows(layout, op, tuple(r for r in MAIN_SPLIT if r[0] in SEQUENCE_OPTIONS),
+              tuple(r for r in MAIN_FULL if r[0] in SEQUENCE_OPTIONS))
+    layout.label(text="Advanced")
+    draw_rows(layout, op, ADVANCED_SPLIT, ADVANCED_FULL, ADVANCED_LABELLED)
+
+
+def draw_rebake_operator(layout, op):
+    """The Adjust Last Operation panel of Rebake Shape Keys."""
+    layout.use_property_decorate = False
+    column = layout.column()
+    column.use_property_split = True
+    column.prop(op, "object")
+    layout.prop(op, "hold")
+    draw_rows(layout, op, tuple(r for r in MAIN_SPLIT if r[0] in REBAKE_OPTIONS),
+              tuple(r for r in MAIN_FULL if r[0] in REBAKE_OPTIONS))
+    layout.label(text="Advanced")
+    draw_rows(layout, op, ADVANCED_SPLIT, ADVANCED_FULL, ADVANCED_LABELLED)
+
+
+classes = (VIEW3D_PT_stick_morph, VIEW3D_PT_stick_morph_pins, VIEW3D_PT_stick_morph_key_poses,
+           VIEW3D_PT_stick_morph_advanced)
 
 
 register, unregister = bpy.utils.register_classes_factory(classes)
