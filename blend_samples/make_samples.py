@@ -15,10 +15,18 @@ by make_figures.py) it writes <output-dir>/<name>.blend with
   - an orthographic camera looking down at both, a sun light;
   - Workbench, 960x540, opaque film, light gray world, frames 1..60.
 The result depends only on the JSON files, so rebuilding gives the same scenes.
+
+It also writes <output-dir>/key_poses/stick_man_wave.blend (unless --no-key-poses), the
+key-pose sample of issue 28: a stick man waving in four poses (WAVE_POSES, made here, no
+JSON) as four edge meshes wave_pose_1 .. 4 in the collection wave_keys, each with its key
+frame (1, 25, 49, 73) for Bake Key Poses, and as one mesh wave_shape_keys whose shape keys
+are animated pose to pose for Rebake Shape Keys. In a folder of its own: the pair samples
+are the *.blend files directly in blend_samples/. `--pairs` with no name writes only it.
 """
 
 import argparse
 import json
+import math
 import os
 import sys
 
@@ -44,8 +52,10 @@ def parse_args():
     parser.add_argument("--figures-dir", default=os.path.join(HERE, "figures"),
                         help="where <pair>.source.json and <pair>.target.json are "
                              "(default: blend_samples/figures)")
-    parser.add_argument("--pairs", nargs="+", default=PAIRS, metavar="NAME",
+    parser.add_argument("--pairs", nargs="*", default=PAIRS, metavar="NAME",
                         help="pairs to build (default: all five)")
+    parser.add_argument("--key-poses", action=argparse.BooleanOptionalAction, default=True,
+                        help="also write key_poses/stick_man_wave.blend (default: yes)")
     return parser.parse_args(argv)
 
 
@@ -143,9 +153,116 @@ def build_scene(pair, figures_dir):
     return scene
 
 
+# ------------------------------------------------------------ key poses ----
+# A stick man waving (issue 28's key poses): vertex 0 the hip, 1 the neck, 2
+# the head, 3-4 left arm, 5-6 right arm, 7-8 left leg, 9-10 right leg. Edge
+# i joins STICK_MAN_PARENT[i] to vertex i + 1, turned by the pose's bend i
+# (degrees) from edge STICK_MAN_REFERENCE[i]'s direction (the spine's from
+# the heading), as tests/cpp/figures.h's stick_man.
+STICK_MAN_PARENT = (0, 1, 1, 3, 1, 5, 0, 7, 0, 9)
+STICK_MAN_REFERENCE = (-1, 0, 0, 2, 0, 4, 0, 6, 0, 8)
+STICK_MAN_LENGTHS = (3.0, 0.8, 1.2, 1.2, 1.2, 1.2, 1.5, 1.5, 1.5, 1.5)
+# (hip position, heading, bends): standing, then the right arm up, waving.
+WAVE_POSES = (
+    ((0.0, 0.0), 90, (0, 0, 120, -30, -120, 30, 160, 10, -160, -10)),
+    ((0.2, 0.0), 92, (0, 5, 125, -25, -60, 60, 158, 12, -162, -8)),
+    ((0.4, 0.05), 88, (0, -5, 118, -35, -40, 10, 162, 8, -158, -12)),
+    ((0.6, 0.0), 91, (0, 0, 122, -28, -40, 70, 160, 10, -160, -10)),
+)
+STICK_MAN_EDGES = tuple((parent, i + 1) for i, parent in enumerate(STICK_MAN_PARENT))
+KEY_POSES_DIR = "key_poses"
+WAVE_NAME = "stick_man_wave"
+WAVE_STEP = 24  # frames from one pose to the next
+
+
+def stick_man(root, heading, bends):
+    """The 11 (x, y) vertices of the stick man with these bends (degrees)."""
+    points = [tuple(root)]
+    direction = [0.0] * len(bends)
+    for i, bend in enumerate(bends):
+        reference = STICK_MAN_REFERENCE[i]
+        direction[i] = (heading if reference < 0 else direction[reference]) + bend
+        x, y = points[STICK_MAN_PARENT[i]]
+        angle = math.radians(direction[i])
+        points.append((x + STICK_MAN_LENGTHS[i] * math.cos(angle), y + STICK_MAN_LENGTHS[i] * math.sin(angle)))
+    return points
+
+
+def wave_poses():
+    """The waving stick man's poses, each a list of 11 (x, y) vertices; the
+    edges are STICK_MAN_EDGES."""
+    return [stick_man(root, heading, bends) for root, heading, bends in WAVE_POSES]
+
+
+def build_key_poses_scene():
+    """The waving stick man twice: four edge meshes wave_pose_1 .. 4 in the
+    collection wave_keys (each with its key frame, 1, 25, 49, 73, for Bake
+    Key Poses) and one mesh wave_shape_keys whose shape keys Pose 2 .. Pose 4
+    (the basis is pose 1) are animated pose to pose at the same frames and
+    back to the basis at frame 97 (for Rebake Shape Keys)."""
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    scene = bpy.context.scene
+    scene.name = WAVE_NAME
+    poses = wave_poses()
+    frames = [1 + WAVE_STEP * k for k in range(len(poses))]
+    keys = bpy.data.collections.new("wave_keys")
+    scene.collection.children.link(keys)
+    spacing = 5.0
+    for k, pose in enumerate(poses):
+        mesh = bpy.data.meshes.new(f"wave_pose_{k + 1}")
+        mesh.from_pydata([(x, y, 0.0) for x, y in pose], list(STICK_MAN_EDGES), [])
+        mesh.update()
+        obj = bpy.data.objects.new(mesh.name, mesh)
+        obj.location = (spacing * k, 0.0, 0.0)
+        # The storage of the add-on's Object property stick_morph_key_frame.
+        obj["stick_morph_key_frame"] = frames[k]
+        keys.objects.link(obj)
+    mesh = bpy.data.meshes.new("wave_shape_keys")
+    mesh.from_pydata([(x, y, 0.0) for x, y in poses[0]], list(STICK_MAN_EDGES), [])
+    mesh.update()
+    obj = bpy.data.objects.new(mesh.name, mesh)
+    obj.location = (0.0, -6.0, 0.0)
+    scene.collection.objects.link(obj)
+    obj.shape_key_add(name="Basis", from_mix=False)
+    blocks = []
+    for k, pose in enumerate(poses[1:], start=2):
+        block = obj.shape_key_add(name=f"Pose {k}", from_mix=False)
+        for point, (x, y) in zip(block.data, pose):
+            point.co = (x, y, 0.0)
+        blocks.append(block)
+    # Pose to pose: at each keyframe one key is 1 and the others 0 (all 0: the basis).
+    shown = [None] + blocks + [None]
+    for k, on in enumerate(shown):
+        for block in blocks:
+            block.value = 1.0 if block == on else 0.0
+            block.keyframe_insert("value", frame=1 + WAVE_STEP * k)
+
+    camera_data = bpy.data.cameras.new(f"{WAVE_NAME}_camera")
+    camera_data.type = "ORTHO"
+    camera_data.ortho_scale = 24.0
+    camera = bpy.data.objects.new(camera_data.name, camera_data)
+    camera.location = (7.5, -1.5, 20.0)
+    scene.collection.objects.link(camera)
+    scene.camera = camera
+    render = scene.render
+    render.engine = "BLENDER_WORKBENCH"
+    render.resolution_x, render.resolution_y = RESOLUTION
+    scene.frame_start, scene.frame_end = 1, 1 + WAVE_STEP * (len(shown) - 1)
+    scene.frame_set(1)
+    return scene
+
+
 def main():
     args = parse_args()
     os.makedirs(args.output_dir, exist_ok=True)
+    if args.key_poses:
+        build_key_poses_scene()
+        bpy.context.preferences.filepaths.save_version = 0
+        folder = os.path.join(args.output_dir, KEY_POSES_DIR)
+        os.makedirs(folder, exist_ok=True)
+        path = os.path.abspath(os.path.join(folder, f"{WAVE_NAME}.blend"))
+        bpy.ops.wm.save_as_mainfile(filepath=path, compress=True)
+        print(f"wrote {path} ({os.path.getsize(path)} bytes)")
     for pair in args.pairs:
         build_scene(pair, args.figures_dir)
         # Overwrite in place: no NAME.blend1 backup (factory settings keep one version;
