@@ -109,7 +109,48 @@ def show_in_status_bar(context, text):
 _clear_status = None
 
 
-class STICKMORPH_OT_bake(bpy.types.Operator):
+class BakeExecute:
+    """What the bake operators share (the pair bake here, the key-pose ones
+    in sequence_operators.py): the poll, and an execute that checks the
+    dependencies, takes the preferences for the options the caller did not
+    set (preference_options), runs self.run(context, progress) and reports a
+    StickMorphError as an ERROR."""
+
+    preference_options = OPTION_NAMES
+
+    @classmethod
+    def poll(cls, context):
+        if context.scene is None:
+            cls.poll_message_set("No scene to bake into")
+            return False
+        if context.mode != "OBJECT":
+            cls.poll_message_set("Switch to Object Mode to bake a Stick Morph")
+            return False
+        return True
+
+    def _apply_preferences(self, context):
+        prefs = addon_preferences(context)
+        if prefs is None:
+            return
+        for name in self.preference_options:
+            if not self.properties.is_property_set(name):
+                setattr(self, name, getattr(prefs, name))
+
+    def execute(self, context):
+        status = dependency_status(refresh=True)
+        if not status.ok:
+            self.report({"ERROR"}, f"Stick Morph: {status.message()}")
+            return {"CANCELLED"}
+        self._apply_preferences(context)
+        try:
+            with Progress(context) as progress:
+                return self.run(context, progress)
+        except StickMorphError as error:
+            self.report({"ERROR"}, f"Stick Morph: {error}")
+            return {"CANCELLED"}
+
+
+class STICKMORPH_OT_bake(BakeExecute, bpy.types.Operator):
     """Bake a morph between two edge meshes (source, then target active) into a new object with shape keys, free of self-intersection unless Motion is Linear"""
     bl_idname = "object.stick_morph_bake"
     bl_label = "Bake Stick Morph"
@@ -128,42 +169,11 @@ class STICKMORPH_OT_bake(bpy.types.Operator):
         **option_properties(),
     }
 
-    @classmethod
-    def poll(cls, context):
-        if context.scene is None:
-            cls.poll_message_set("No scene to bake into")
-            return False
-        if context.mode != "OBJECT":
-            cls.poll_message_set("Switch to Object Mode to bake a Stick Morph")
-            return False
-        return True
-
     def draw(self, context):
         from . import ui
         ui.draw_operator(self.layout, self)
 
-    def _apply_preferences(self, context):
-        prefs = addon_preferences(context)
-        if prefs is None:
-            return
-        for name in OPTION_NAMES:
-            if not self.properties.is_property_set(name):
-                setattr(self, name, getattr(prefs, name))
-
-    def execute(self, context):
-        status = dependency_status(refresh=True)
-        if not status.ok:
-            self.report({"ERROR"}, f"Stick Morph: {status.message()}")
-            return {"CANCELLED"}
-        self._apply_preferences(context)
-        try:
-            with Progress(context) as progress:
-                return self._bake(context, progress)
-        except StickMorphError as error:
-            self.report({"ERROR"}, f"Stick Morph: {error}")
-            return {"CANCELLED"}
-
-    def _bake(self, context, progress):
+    def run(self, context, progress):
         from . import baking, core
 
         started = time.perf_counter()

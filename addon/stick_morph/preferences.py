@@ -6,9 +6,10 @@ the Load Defaults operator is in operators.py with the others.
 """
 
 import bpy
-from bpy.props import BoolProperty, FloatProperty, IntProperty, PointerProperty, StringProperty
+from bpy.props import FloatProperty, IntProperty, PointerProperty, StringProperty
 
-from .properties import _DEFAULTS, OPTION_NAMES, addon_preferences, bake_settings, option_properties  # noqa: F401
+from .properties import (_DEFAULTS, OPTION_NAMES, addon_preferences, bake_settings,  # noqa: F401
+                         key_pose_properties, option_properties)
 
 
 class StickMorphPreferences(bpy.types.AddonPreferences):
@@ -46,14 +47,7 @@ class StickMorphSceneSettings(bpy.types.PropertyGroup):
             name="Collection", type=bpy.types.Collection, options=set(),
             description="Take the mesh objects of this collection as the key poses, in its order "
                         "(empty: the selected meshes, ordered by name)"),
-        "frame_step": IntProperty(name="Frames Between Keys", default=24, min=1, max=10000, soft_max=500,
-                                  options=set(),
-                                  description="Frames from one key to the next when the keys have no key frames "
-                                              "of their own"),
-        "loop": BoolProperty(name="Loop", default=False, options=set(),
-                             description="After the last key return smoothly to the first"),
-        "hold": BoolProperty(name="Hold at Keys", default=False, options=set(),
-                             description="Stop the motion at every key"),
+        **key_pose_properties(),
         "last_result": StringProperty(name="Last Result", options=set()),
         "last_vertices": IntProperty(name="Vertices", options=set()),
         "last_steiner": IntProperty(name="Steiner Vertices", options=set()),

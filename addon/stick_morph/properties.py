@@ -158,6 +158,23 @@ def option_properties():
     }
 
 
+def key_pose_properties():
+    """Fresh definitions of the key-pose operators' own timing options (the
+    operators and the scene's settings for the Key Poses sub-panel)."""
+    return {
+        "frame_step": IntProperty(
+            name="Frames Between Keys", default=24, min=1, max=10000, soft_max=500, options=set(),
+            description="Frames from one key to the next when the keys have no key frames of their own; "
+                        "with Loop also from the last key back to the first"),
+        "loop": BoolProperty(name="Loop", default=False, options=set(),
+                             description="After the last key return smoothly to the first"),
+        "hold": BoolProperty(name="Hold at Keys", default=False, options=set(),
+                             description="Stop the motion at every key (otherwise it passes through the keys at "
+                                         "continuous speed; Rebake Shape Keys always holds a pose repeated at "
+                                         "the next keyframe)"),
+    }
+
+
 def addon_preferences(context):
     addon = context.preferences.addons.get(__package__)
     return addon.preferences if addon is not None else None

@@ -14,12 +14,11 @@ import json
 import time
 
 import bpy
-from bpy.props import BoolProperty, IntProperty, StringProperty
+from bpy.props import IntProperty, StringProperty
 
 from .common import BakeSettings, StickMorphError, is_pin_group
-from .helpers import dependency_status
-from .operators import Progress, show_in_status_bar
-from .properties import REBAKE_OPTIONS, SEQUENCE_OPTIONS, addon_preferences, option_properties
+from .operators import BakeExecute, show_in_status_bar
+from .properties import REBAKE_OPTIONS, SEQUENCE_OPTIONS, key_pose_properties, option_properties
 
 KEY_FRAME_PROPERTY = "stick_morph_key_frame"
 KEYS_TAG = "stick_morph_keys"  # a sequence result's keys, JSON, to replace it when rebaked
@@ -34,25 +33,6 @@ def _options(names):
 
 def _settings(op, names, frame_start, **fixed):
     return BakeSettings(frame_start=frame_start, **{name: getattr(op, name) for name in names}, **fixed)
-
-
-def _apply_preferences(op, context, names):
-    prefs = addon_preferences(context)
-    if prefs is None:
-        return
-    for name in names:
-        if not op.properties.is_property_set(name):
-            setattr(op, name, getattr(prefs, name))
-
-
-def _object_mode(cls, context):
-    if context.scene is None:
-        cls.poll_message_set("No scene to bake into")
-        return False
-    if context.mode != "OBJECT":
-        cls.poll_message_set("Switch to Object Mode to bake a Stick Morph")
-        return False
-    return True
 
 
 def _finish(op, context, result, previous, created, settings, first_frame, frame_count, sequence, names,
@@ -86,7 +66,7 @@ def _finish(op, context, result, previous, created, settings, first_frame, frame
     show_in_status_bar(context, text)
 
 
-class STICKMORPH_OT_bake_sequence(bpy.types.Operator):
+class STICKMORPH_OT_bake_sequence(BakeExecute, bpy.types.Operator):
     """Bake one morph through the selected edge meshes as key poses (ordered by name, or a collection's objects in its order) into a new object with shape keys, free of self-intersection"""
     bl_idname = "object.stick_morph_bake_sequence"
     bl_label = "Bake Key Poses"
@@ -103,38 +83,16 @@ class STICKMORPH_OT_bake_sequence(bpy.types.Operator):
         "frame_start": IntProperty(name="Start", options={"SKIP_SAVE"},
                                    description="Frame of the first key when the keys have no key frames of "
                                                "their own (not set: the scene's current frame)"),
-        "frame_step": IntProperty(name="Frames Between Keys", default=24, min=1, max=10000, soft_max=500,
-                                  options=set(),
-                                  description="Frames from one key to the next when the keys have no key "
-                                              "frames of their own; with Loop also from the last key back to the first"),
-        "loop": BoolProperty(name="Loop", default=False, options=set(),
-                             description="After the last key return smoothly to the first"),
-        "hold": BoolProperty(name="Hold at Keys", default=False, options=set(),
-                             description="Stop the motion at every key (otherwise it passes through the keys "
-                                         "at continuous speed)"),
+        **key_pose_properties(),
         **_options(SEQUENCE_OPTIONS),
     }
 
-    @classmethod
-    def poll(cls, context):
-        return _object_mode(cls, context)
+    preference_options = SEQUENCE_OPTIONS
 
     def draw(self, context):
         from . import ui
-        ui.draw_sequence_operator(self.layout, self)
-
-    def execute(self, context):
-        status = dependency_status(refresh=True)
-        if not status.ok:
-            self.report({"ERROR"}, f"Stick Morph: {status.message()}")
-            return {"CANCELLED"}
-        _apply_preferences(self, context, SEQUENCE_OPTIONS)
-        try:
-            with Progress(context) as progress:
-                return self._bake(context, progress)
-        except StickMorphError as error:
-            self.report({"ERROR"}, f"Stick Morph: {error}")
-            return {"CANCELLED"}
+        ui.draw_key_pose_operator(self.layout, self, ("collection", "frame_start", "frame_step"), ("loop", "hold"),
+                                  SEQUENCE_OPTIONS)
 
     def _key_objects(self, context):
         from . import sequence
@@ -172,7 +130,7 @@ class STICKMORPH_OT_bake_sequence(bpy.types.Operator):
             raise StickMorphError("an object is a key twice: " + ", ".join(f"'{obj.name}'" for obj in objects))
         return objects
 
-    def _bake(self, context, progress):
+    def run(self, context, progress):
         from . import baking, core, sequence
 
         started = time.perf_counter()
@@ -251,7 +209,7 @@ def shape_key_animation(obj):
     return frames, blocks, values
 
 
-class STICKMORPH_OT_rebake_shape_keys(bpy.types.Operator):
+class STICKMORPH_OT_rebake_shape_keys(BakeExecute, bpy.types.Operator):
     """Morph the active mesh's pose-to-pose shape-key animation through its poses (at each keyframe one shape key on, or none: the basis) into a new object, free of self-intersection; the mesh and its animation stay as they are"""
     bl_idname = "object.stick_morph_rebake_shape_keys"
     bl_label = "Rebake Shape Keys"
@@ -260,34 +218,17 @@ class STICKMORPH_OT_rebake_shape_keys(bpy.types.Operator):
     __annotations__ = {
         "object": StringProperty(name="Object", options={"SKIP_SAVE"},
                                  description="The mesh whose shape-key animation to rebake (empty: the active object)"),
-        "hold": BoolProperty(name="Hold at Keys", default=False, options=set(),
-                             description="Stop the motion at every pose (a pose repeated at the next keyframe is "
-                                         "always held)"),
+        "hold": key_pose_properties()["hold"],
         **_options(REBAKE_OPTIONS),
     }
 
-    @classmethod
-    def poll(cls, context):
-        return _object_mode(cls, context)
+    preference_options = REBAKE_OPTIONS
 
     def draw(self, context):
         from . import ui
-        ui.draw_rebake_operator(self.layout, self)
+        ui.draw_key_pose_operator(self.layout, self, ("object",), ("hold",), REBAKE_OPTIONS)
 
-    def execute(self, context):
-        status = dependency_status(refresh=True)
-        if not status.ok:
-            self.report({"ERROR"}, f"Stick Morph: {status.message()}")
-            return {"CANCELLED"}
-        _apply_preferences(self, context, REBAKE_OPTIONS)
-        try:
-            with Progress(context) as progress:
-                return self._rebake(context, progress)
-        except StickMorphError as error:
-            self.report({"ERROR"}, f"Stick Morph: {error}")
-            return {"CANCELLED"}
-
-    def _rebake(self, context, progress):
+    def run(self, context, progress):
         from . import baking, sequence
 
         started = time.perf_counter()

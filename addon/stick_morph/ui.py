@@ -301,30 +301,18 @@ class VIEW3D_PT_stick_morph_key_poses(bpy.types.Panel):
         draw_sequence_buttons(layout.column(align=True), settings)
 
 
-def draw_sequence_operator(layout, op):
-    """The Adjust Last Operation panel of Bake Key Poses."""
+def draw_key_pose_operator(layout, op, fields, toggles, options):
+    """The Adjust Last Operation panel of a key-pose operator: its own
+    fields and toggles, then the bake's rows it takes (options)."""
     layout.use_property_decorate = False
     column = layout.column()
     column.use_property_split = True
-    for name in ("collection", "frame_start", "frame_step"):
+    for name in fields:
         column.prop(op, name)
-    layout.prop(op, "loop")
-    layout.prop(op, "hold")
-    draw_rows(layout, op, tuple(r for r in MAIN_SPLIT if r[0] in SEQUENCE_OPTIONS),
-              tuple(r for r in MAIN_FULL if r[0] in SEQUENCE_OPTIONS))
-    layout.label(text="Advanced")
-    draw_rows(layout, op, ADVANCED_SPLIT, ADVANCED_FULL, ADVANCED_LABELLED)
-
-
-def draw_rebake_operator(layout, op):
-    """The Adjust Last Operation panel of Rebake Shape Keys."""
-    layout.use_property_decorate = False
-    column = layout.column()
-    column.use_property_split = True
-    column.prop(op, "object")
-    layout.prop(op, "hold")
-    draw_rows(layout, op, tuple(r for r in MAIN_SPLIT if r[0] in REBAKE_OPTIONS),
-              tuple(r for r in MAIN_FULL if r[0] in REBAKE_OPTIONS))
+    for name in toggles:
+        layout.prop(op, name)
+    draw_rows(layout, op, tuple(r for r in MAIN_SPLIT if r[0] in options),
+              tuple(r for r in MAIN_FULL if r[0] in options))
     layout.label(text="Advanced")
     draw_rows(layout, op, ADVANCED_SPLIT, ADVANCED_FULL, ADVANCED_LABELLED)
 

@@ -267,22 +267,23 @@ def test_bake_key_poses_refusals_name_the_key(scene, addon):
 
 
 def drawn_separately():
-    """The keys, key 3 drawn with its right forearm in two edges (12 vertices)."""
+    """The keys, selected, key 3 drawn with its right forearm in two edges
+    (12 vertices): (objects, key 3's edges)."""
+    objects = make_keys()
     pose = list(POSES[2]) + [list((np.asarray(POSES[2][5]) + np.asarray(POSES[2][6])) / 2)]
     edges = [e for e in EDGES if e != [5, 6]] + [[5, 11], [11, 6]]
-    return pose, edges
+    bpy.data.objects.remove(objects[2])
+    objects[2] = make_mesh_object("Wave_3", pose, edges, pose_matrix(2))
+    bpy.context.view_layer.update()
+    select(*objects)
+    return objects, edges
 
 
 def test_matched_keys_when_the_module_matches(scene, addon):
     seq = sequence_module()
     if not seq.supports_matching():
         pytest.skip("this stickmorph module's morph_key_poses has no correspond= (keys drawn separately)")
-    objects = make_keys()
-    pose, edges = drawn_separately()
-    bpy.data.objects.remove(objects[2])
-    objects[2] = make_mesh_object("Wave_3", pose, edges, pose_matrix(2))
-    bpy.context.view_layer.update()
-    select(*objects)
+    objects, edges = drawn_separately()
     assert bpy.ops.object.stick_morph_bake_sequence(frame_step=10, frame_start=1) == {"FINISHED"}
     result = bpy.context.view_layer.objects.active
     worlds = [world_coords(o) for o in objects]
@@ -310,12 +311,7 @@ def test_keys_that_need_matching_without_the_module_matching(scene, addon):
     seq = sequence_module()
     if seq.supports_matching():
         pytest.skip("this stickmorph module matches key poses (test_matched_keys_when_the_module_matches)")
-    objects = make_keys()
-    pose, edges = drawn_separately()
-    bpy.data.objects.remove(objects[2])
-    objects[2] = make_mesh_object("Wave_3", pose, edges, pose_matrix(2))
-    bpy.context.view_layer.update()
-    select(*objects)
+    objects, edges = drawn_separately()
     message = operator_fails(bpy.ops.object.stick_morph_bake_sequence)
     assert "the vertex counts differ" in message and "cannot match key poses" in message, message
 
