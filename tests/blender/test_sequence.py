@@ -233,6 +233,29 @@ def test_bake_key_poses_undo(scene, addon):
     assert snapshot() == after
 
 
+def test_redo_keeps_the_keys_and_the_start(scene, addon):
+    """Redo re-runs with the keys and the start frame the first run took,
+    whatever the selection and the current frame are then."""
+    objects = make_keys()
+    select(*objects)
+    scene.frame_current = 7
+    worlds = [world_coords(o) for o in objects]
+    bpy.ops.ed.undo_push(message="keys")
+    assert bpy.ops.object.stick_morph_bake_sequence("EXEC_DEFAULT", True, frame_step=5) == {"FINISHED"}
+    # Copied now: undo frees the registered operators.
+    last = bpy.context.window_manager.operators[-1].properties
+    keys, start = last.keys, last.frame_start
+    assert json.loads(keys) == [o.name for o in objects] and start == 7
+    bpy.ops.ed.undo()
+    select()
+    bpy.context.scene.frame_current = 30
+    assert bpy.ops.object.stick_morph_bake_sequence("EXEC_DEFAULT", True, keys=keys, frame_start=start,
+                                                    frame_step=6) == {"FINISHED"}
+    result = bpy.context.view_layer.objects.active
+    expected, _ = expected_frames(worlds, 19, [0, 6, 12, 18])
+    check_result(result, expected, 7, figure_size(worlds))
+
+
 def test_bake_key_poses_refusals_name_the_key(scene, addon):
     bake = bpy.ops.object.stick_morph_bake_sequence
     objects = make_keys()
