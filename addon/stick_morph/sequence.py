@@ -353,13 +353,19 @@ def morph_keys(prepared: PreparedKeys, settings: BakeSettings, frame_count: int,
 
     matched, why = prepared.matched, prepared.why
     try:
+        result = run(matched)
+    except engine.IncompatibleFiguresError as e:
+        # Automatic took the keys by index; matched, they may still be
+        # compatible (a symmetric figure numbered otherwise).
+        by_index = key_error_message(e, prepared.names)
+        if matched or prepared.setting != "INDEX_OR_MATCH" or not supports_matching(engine):
+            raise StickMorphError(by_index) from e
+        matched, why = True, "they are not compatible by index"
         try:
-            result = run(matched)
-        except engine.IncompatibleFiguresError:
-            if matched or prepared.setting != "INDEX_OR_MATCH" or not supports_matching(engine):
-                raise
-            matched, why = True, "they are not compatible by index"
             result = run(True)
+        except (engine.StickMorphError, engine.InternalError) as again:
+            raise StickMorphError(f"{by_index} (nor can they be matched by shape: "
+                                  f"{key_error_message(again, prepared.names)})") from again
     except (engine.StickMorphError, engine.InternalError) as e:
         raise StickMorphError(key_error_message(e, prepared.names)) from e
     places = result.get("places") if matched else None
