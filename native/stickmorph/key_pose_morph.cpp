@@ -100,15 +100,11 @@ std::pair<int, std::vector<int>> frame_plan(const KeyPoseMorphOptions& options, 
   return {n, at};
 }
 
-}  // namespace
-
-KeyPoseMorphResult morph_key_poses(const std::vector<StickFigure>& keys, const KeyPoseMorphOptions& options) {
-  if (keys.size() < 2)
-    throw InvalidArgumentError("a key-pose sequence needs at least two keys, got " + std::to_string(keys.size()));
-  check_same_graph(keys);
-  const std::size_t count = keys.size();
+// Every option, before any figure is looked at (as the pair morph checks
+// its options first): the shared ones as the pair morph checks them, the
+// per-key and per-segment lists by their lengths, and the frame plan.
+void check_key_pose_options(const KeyPoseMorphOptions& options, std::size_t count) {
   const std::size_t segments = options.loop ? count : count - 1;
-  // The options every segment shares, checked as the pair morph checks them.
   MorphStickFiguresOptions shared;
   shared.method = MorphMethod::Rigid;
   shared.steiner = options.steiner;
@@ -117,14 +113,30 @@ KeyPoseMorphResult morph_key_poses(const std::vector<StickFigure>& keys, const K
   shared.verify = options.verify;
   shared.frame_check = options.frame_check;
   check_morph_options(shared);
-  if (!options.turns.empty() && options.turns.size() != segments)
-    throw InvalidArgumentError("turns: one entry per segment: " + std::to_string(segments) + " segments, " +
-                               std::to_string(options.turns.size()) + " entries");
+  const auto per_entry = [&](const char* option, std::size_t size, std::size_t wanted, const char* what) {
+    if (size != 0 && size != wanted)
+      throw InvalidArgumentError(std::string(option) + ": one entry per " + what + ": " + std::to_string(wanted) +
+                                 " " + what + "s, " + std::to_string(size) + " entries");
+  };
+  per_entry("turns", options.turns.size(), segments, "segment");
+  per_entry("rotation", options.rotation.size(), segments, "segment");
+  per_entry("hold", options.hold.size(), count, "key");
   for (std::size_t s = 0; s < options.turns.size(); ++s)
     if (std::llabs(options.turns[s]) > kMaxExtraTurns)
       throw InvalidArgumentError("turns: segment " + std::to_string(s + 1) + " asks for " +
                                  std::to_string(options.turns[s]) + " whole turns, more than " +
                                  std::to_string(kMaxExtraTurns) + " either way");
+  frame_plan(options, count, segments);
+  if (options.correspond == CorrespondenceMode::ByIndex)
+    for (const std::vector<VertexPin>& pins : options.pins)
+      check_pins_need_auto(options.correspond, pins, OptionSpelling::Keyword, "");
+}
+
+// The morph of keys on one vertex set (by index, or matched).
+KeyPoseMorphResult morph_common_keys(const std::vector<StickFigure>& keys, const KeyPoseMorphOptions& options) {
+  check_same_graph(keys);
+  const std::size_t count = keys.size();
+  const std::size_t segments = options.loop ? count : count - 1;
   const auto [frames, key_frames] = frame_plan(options, count, segments);
 
   // The keys at their own scale only, for now: the working scale that
@@ -238,6 +250,21 @@ KeyPoseMorphResult morph_key_poses(const std::vector<StickFigure>& keys, const K
       throw InternalError("morph_key_poses: frame " + std::to_string(key_frames[k]) + " is not " + key_name(k));
   if (options.loop && result.frames.back() != keys[0].vertices)
     throw InternalError("morph_key_poses: the loop's last frame is not key 1");
+  return result;
+}
+
+}  // namespace
+
+KeyPoseMorphResult morph_key_poses(const std::vector<StickFigure>& keys, const KeyPoseMorphOptions& options) {
+  if (keys.size() < 2)
+    throw InvalidArgumentError("a key-pose sequence needs at least two keys, got " + std::to_string(keys.size()));
+  check_key_pose_options(options, keys.size());
+  if (options.correspond == CorrespondenceMode::ByIndex) return morph_common_keys(keys, options);
+  KeyPoseCorrespondenceOptions matching;
+  matching.pins = options.pins;
+  KeyPoseCorrespondence correspondence = correspond_key_poses(keys, matching);
+  KeyPoseMorphResult result = morph_common_keys(correspondence.keys, options);
+  result.correspondence = std::move(correspondence);
   return result;
 }
 

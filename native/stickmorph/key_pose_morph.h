@@ -27,7 +27,9 @@
 #include <optional>
 #include <vector>
 
+#include "stickmorph/figure_correspondence.h"
 #include "stickmorph/figure_triangulation.h"
+#include "stickmorph/key_pose_correspondence.h"
 #include "stickmorph/morph.h"
 #include "stickmorph/morph_stick_figures.h"
 #include "stickmorph/similarity_motion.h"
@@ -39,6 +41,13 @@ namespace stickmorph {
 constexpr int kDefaultFramesPerSegment = 49;
 
 struct KeyPoseMorphOptions {
+  /// ByIndex: the keys share their vertices and edges. Auto: keys drawn
+  /// separately are matched onto one common figure first
+  /// (key_pose_correspondence.h), and the frames are that figure's.
+  CorrespondenceMode correspond = CorrespondenceMode::ByIndex;
+  /// With Auto: per consecutive pair of keys, the vertices that must match
+  /// (key_pose_correspondence.h). Refused by index.
+  std::vector<std::vector<VertexPin>> pins;
   /// N, the frames of the whole sequence; default kDefaultFramesPerSegment
   /// times the segments, plus 1.
   std::optional<long long> frames;
@@ -76,13 +85,17 @@ struct KeyPoseMorphResult {
   std::vector<std::vector<Vec2>> frames;    ///< N frames of the figure's n vertices; frames[F_k] is key k exactly
   std::vector<int> key_frames;              ///< F_k per key
   std::vector<KeyPoseSegment> segments;     ///< S segments, in order
+  /// With CorrespondenceMode::Auto: the common figure on every key (its
+  /// edges are the frames' edges) and where its vertices are on each key.
+  std::optional<KeyPoseCorrespondence> correspondence;
 };
 
-/// The morph through `keys` (K >= 2 stick figures on the same vertices and
-/// edges, made by make_stick_figure), the rigid method's motion.
+/// The morph through `keys` (K >= 2 stick figures made by
+/// make_stick_figure: on the same vertices and edges, or drawn separately
+/// with CorrespondenceMode::Auto), the rigid method's motion.
 /// @throws InvalidArgumentError for fewer than two keys, keys of other
 ///         vertex counts or edges (naming the key), and options out of
-///         range (naming the option and the entry);
+///         range (naming the option and the entry), pins by index;
 ///         IncompatibleFiguresError naming the two keys and, as the pair
 ///         check does, the vertices; NumericRangeError for keys beyond the
 ///         numeric range the morph carries; VerificationError if a frame
