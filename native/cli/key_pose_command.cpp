@@ -7,6 +7,7 @@
 #include "output_files.h"
 #include "stickmorph/compatible_triangulation.h"
 #include "stickmorph/errors.h"
+#include "stickmorph/figure_correspondence.h"
 #include "stickmorph/figure_io.h"
 #include "stickmorph/frame_certificate.h"
 #include "stickmorph/io/result_files.h"
@@ -24,7 +25,6 @@ struct Unsupported {
 };
 constexpr Unsupported kUnsupported[] = {
     {"--easing", "the sequence's timing is one smooth spline through the keys; --hold K stops at key K"},
-    {"--correspond", "key poses must correspond by index (matching keys drawn separately is not built yet)"},
     {"--svg", "the filmstrip of a sequence is not built yet"},
     {"--svg-triangulation", "the filmstrip of a sequence is not built yet"},
     {"--svg-compare-linear", "the filmstrip of a sequence is not built yet"},
@@ -55,9 +55,11 @@ int run_key_poses(const ParsedArguments& arguments) {
     if (option_value(arguments, unsupported.option) || arguments.repeated.count(unsupported.option))
       throw InvalidArgumentError("morph: option " + std::string(unsupported.option) +
                                  " is not available for key poses: " + unsupported.why);
-  if (arguments.repeated.count("--pin"))
-    throw InvalidArgumentError("morph: option --pin is not available for key poses: key poses must correspond by "
-                               "index (matching keys drawn separately is not built yet)");
+  // --pin S:T pins vertex S of key 1 to vertex T of key 2; the matching
+  // carries the pinned vertex on through the later keys.
+  std::vector<VertexPin> pins;
+  if (const auto pin_texts = arguments.repeated.find("--pin"); pin_texts != arguments.repeated.end())
+    for (const std::string& text : pin_texts->second) pins.push_back(parse_vertex_pin(text));
   if (const std::string* method = option_value(arguments, "--method"))
     if (parse_morph_method(*method) != MorphMethod::Rigid)
       throw InvalidArgumentError("morph: key poses are morphed with --method rigid only (its guide is what makes the "
@@ -97,6 +99,10 @@ int run_key_poses(const ParsedArguments& arguments) {
                                  std::to_string(segments) + "), got " + std::to_string(turns.size()));
     for (std::size_t s = 0; s < segments; ++s) options.turns.push_back(turns[turns.size() == 1 ? 0 : s]);
   }
+  if (const std::string* name = option_value(arguments, "--correspond"))
+    options.correspond = parse_correspondence_mode(*name);
+  check_pins_need_auto(options.correspond, pins, OptionSpelling::CommandLine, "morph: ");
+  if (!pins.empty()) options.pins.push_back(pins);
   if (const std::string* name = option_value(arguments, "--steiner")) options.steiner = parse_steiner_method(*name);
   if (const std::string* name = option_value(arguments, "--weights")) options.weights = parse_weight_kind(*name);
   options.enclosure_sides = integer_option(arguments, "--enclosure-sides");

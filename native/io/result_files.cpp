@@ -289,13 +289,25 @@ std::string morph_file_json(const StickFigure& source, const std::vector<double>
 std::string key_pose_file_json(const StickFigure& first_key, const KeyPoseMorphResult& result, bool verified) {
   JsonWriter out(true);
   out.begin_object();
-  write_motion(out, first_key, result.times, result.frames);
+  // Matched keys: the frames are the common figure's, on its edges.
+  write_motion(out, result.correspondence ? result.correspondence->keys[0] : first_key, result.times, result.frames);
   out.key("keys");
   out.begin_array();
-  for (int f : result.key_frames) {
+  for (std::size_t k = 0; k < result.key_frames.size(); ++k) {
     out.begin_object();
     out.key("frame");
-    out.value(f);
+    out.value(result.key_frames[k]);
+    if (result.correspondence) {
+      // Where each matched vertex is on this key's own drawing, as the
+      // pair's "correspondence" says it for the source and the target.
+      const std::vector<MatchedPlace>& places = result.correspondence->places[k];
+      out.key("vertex");
+      write_places(out, places, &MatchedPlace::vertex);
+      out.key("edge");
+      write_places(out, places, &MatchedPlace::edge);
+      out.key("fraction");
+      write_fractions(out, places);
+    }
     out.end_object();
   }
   out.end_array();
@@ -328,6 +340,19 @@ std::string key_pose_file_json(const StickFigure& first_key, const KeyPoseMorphR
   out.value("rigid");
   out.key("verified");
   out.value(verified);
+  if (result.correspondence) {
+    out.key("correspondence");
+    out.begin_object();
+    out.key("matched_vertices");
+    out.value(int(result.correspondence->keys[0].vertices.size()));
+    out.key("milliseconds");
+    out.value(result.correspondence->milliseconds);
+    out.key("pairs");
+    out.begin_array();
+    for (const FigureCorrespondence& match : result.correspondence->matches) write_matching_stats(out, match);
+    out.end_array();
+    out.end_object();
+  }
   out.key("segments");
   out.begin_array();
   for (const KeyPoseSegment& segment : result.segments) {
