@@ -4,6 +4,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,37 @@ auto per_segment(const py::object& object, const std::string& name, Convert conv
   return values;
 }
 
+// How deeply nested an array-like is: 0 for a scalar, ndim for an array,
+// for a sequence 1 + its deepest item's depth (1 when empty). It tells one
+// #E by 2 edge list (depth 2) from one per key (depth 3), and one pin list
+// from one per pair of keys (which may be empty: [[], [(3, 4)]]).
+int nesting_depth(const py::handle& object) {
+  if (py::isinstance<py::array>(object)) return int(object.cast<py::array>().ndim());
+  if (!is_sequence(py::reinterpret_borrow<py::object>(object))) return 0;
+  int deepest = 0;
+  for (const py::handle item : object.cast<py::sequence>()) {
+    deepest = std::max(deepest, nesting_depth(item));
+    if (deepest >= 2) break;  // deep enough to tell the forms apart
+  }
+  return 1 + deepest;
+}
+
+// Where each vertex of the frames is on each key: matched, what the
+// matching said; by index, every key's own vertex i.
+py::list places_list(const sm::KeyPoseMorphResult& result, std::size_t keys, std::size_t n) {
+  py::list list;
+  for (std::size_t k = 0; k < keys; ++k) {
+    if (result.correspondence) {
+      list.append(places_dict(result.correspondence->places[k]));
+      continue;
+    }
+    std::vector<sm::MatchedPlace> own(n);
+    for (std::size_t i = 0; i < n; ++i) own[i].vertex = int(i);
+    list.append(places_dict(own));
+  }
+  return list;
+}
+
 py::dict segment_dict(const sm::KeyPoseSegment& segment) {
   const sm::MorphStickFiguresStats& stats = segment.stats;
   py::dict guide_frames;
@@ -69,7 +101,8 @@ void bind_key_poses(py::module_& m) {
       [](const py::object& keys_xy, const py::object& edges, const py::object& frames, const py::object& keys_at,
          const py::object& loop, const py::object& hold, const py::object& rotation, const py::object& turns,
          const py::object& steiner, const py::object& weights, const py::object& enclosure_sides,
-         const py::object& verify, const py::object& frame_check) {
+         const py::object& verify, const py::object& frame_check, const py::object& correspond,
+         const py::object& pins) {
         // Arguments first, figures second, as morph() does.
         const sm::MorphStickFiguresOptions shared =
             to_morph_options(py::int_(sm::kDefaultMorphFrames), steiner, weights, enclosure_sides, py::str("rigid"),
@@ -80,6 +113,16 @@ void bind_key_poses(py::module_& m) {
         options.enclosure_sides = shared.enclosure_sides;
         options.verify = shared.verify;
         options.frame_check = shared.frame_check;
+        if (!correspond.is_none())
+          options.correspond = sm::parse_correspondence_mode(to_name(correspond, "correspond"));
+        // One #P by 2 list (keys 1 and 2) or one per pair of keys.
+        if (!pins.is_none() && nesting_depth(pins) == 3) {
+          const py::sequence lists = pins.cast<py::sequence>();
+          for (std::size_t p = 0; p < lists.size(); ++p) options.pins.push_back(to_pins(lists[p]));
+        } else if (!pins.is_none()) {
+          std::vector<sm::VertexPin> first = to_pins(pins);
+          if (!first.empty()) options.pins.push_back(std::move(first));
+        }
         if (!frames.is_none()) options.frames = to_count(frames, "frames");
         if (!keys_at.is_none()) {
           if (!is_sequence(keys_at)) throw sm::InvalidArgumentError("keys_at must be a sequence of frame numbers");
@@ -102,10 +145,21 @@ void bind_key_poses(py::module_& m) {
         });
         if (!is_sequence(keys_xy)) throw sm::InvalidArgumentError("keys_xy must be a sequence of #V by 2 arrays");
         const py::sequence key_items = keys_xy.cast<py::sequence>();
+        // One edge list for every key, or (keys drawn separately) one per key.
+        const bool edges_per_key = nesting_depth(edges) == 3;
+        if (edges_per_key && py::len(edges) != key_items.size())
+          throw sm::InvalidArgumentError("edges: one edge list for every key, or one per key (" +
+                                         std::to_string(key_items.size()) + "), got " +
+                                         std::to_string(py::len(edges)) + " lists");
         std::vector<sm::StickFigure> keys;
-        for (std::size_t k = 0; k < key_items.size(); ++k)
-          keys.push_back(make_named_figure(key_items[k], edges, "keys_xy[" + std::to_string(k) + "]", "edges",
+        for (std::size_t k = 0; k < key_items.size(); ++k) {
+          const std::string index = "[" + std::to_string(k) + "]";
+          // Owned: an array's item is a new view, not kept alive by the array.
+          const py::object key_edges = edges_per_key ? py::object(edges.cast<py::sequence>()[k]) : edges;
+          keys.push_back(make_named_figure(key_items[k], key_edges,
+                                           "keys_xy" + index, edges_per_key ? "edges" + index : "edges",
                                            "key " + std::to_string(k + 1)));
+        }
         // One rotation or turn count for every segment, as the CLI takes it.
         const std::size_t segments = options.loop ? keys.size() : keys.size() - (keys.empty() ? 0 : 1);
         if (options.rotation.size() == 1 && segments > 1) options.rotation.assign(segments, options.rotation[0]);
@@ -115,11 +169,21 @@ void bind_key_poses(py::module_& m) {
           py::gil_scoped_release release;
           result = sm::morph_key_poses(keys, options);
         }
+        // Matched keys: the frames are the common figure's.
+        const sm::StickFigure& figure = result.correspondence ? result.correspondence->keys[0] : keys[0];
+        const std::size_t n = figure.vertices.size();
         py::dict dict;
-        dict["frames"] = frames_array(result.frames, keys[0].vertices.size());
+        dict["frames"] = frames_array(result.frames, n);
         dict["times"] = py::array_t<double>(py::ssize_t(result.times.size()), result.times.data());
-        dict["edges"] = to_edge_array(keys[0].edges);
+        dict["edges"] = to_edge_array(figure.edges);
         dict["keys_at"] = to_list(result.key_frames);
+        dict["places"] = places_list(result, keys.size(), n);
+        if (result.correspondence) {
+          py::list pairs;
+          for (const sm::FigureCorrespondence& match : result.correspondence->matches)
+            pairs.append(matching_stats_dict(match));
+          dict["correspondence"] = pairs;
+        }
         py::list segment_list;
         for (const sm::KeyPoseSegment& segment : result.segments) segment_list.append(segment_dict(segment));
         dict["segments"] = segment_list;
@@ -129,6 +193,7 @@ void bind_key_poses(py::module_& m) {
       py::arg("loop") = false, py::arg("hold") = py::none(), py::arg("rotation") = py::none(),
       py::arg("turns") = py::none(), py::arg("steiner") = py::none(), py::arg("weights") = py::none(),
       py::arg("enclosure_sides") = py::none(), py::arg("verify") = py::none(), py::arg("frame_check") = py::none(),
+      py::arg("correspond") = py::none(), py::arg("pins") = py::none(),
       R"doc(Morphs a stick figure through a sequence of key poses (issue 28): one continuous,
 valid motion that shows key k exactly at frame keys_at[k], its velocity continuous through
 every key (unless hold stops it there). The same computation as
@@ -138,8 +203,10 @@ Each segment is a rigid morph of its pair of keys with its own compatible triang
 following one as-rigid-as-possible guide through all keys; every frame is verified exactly.
 
 Args:
-  keys_xy: K >= 2 arrays, #V by 2 each: the keys, vertex i of each the same vertex.
-  edges: #E by 2 integer array-like, the edges of every key.
+  keys_xy: K >= 2 arrays, #V by 2 each: the keys, vertex i of each the same vertex (with
+    correspond="auto" each key its own #V_k by 2).
+  edges: #E by 2 integer array-like, the edges of every key; with correspond="auto" also a
+    sequence of K of them, one per key.
   frames: the frames of the whole sequence (default 49 per segment + 1).
   keys_at: K frame numbers, strictly increasing from 0 to frames - 1 (below it with loop);
     default evenly spaced.
@@ -148,19 +215,29 @@ Args:
   rotation: "short", "ccw" or "cw" for every segment, or one per segment.
   turns: extra whole turns for every segment, or one per segment.
   steiner, weights, enclosure_sides, verify, frame_check: as for morph().
+  correspond: "index" (default) or "auto": keys drawn separately (other vertex counts,
+    numbering, subdivision) are matched onto one common figure of m vertices, key 1's first,
+    and every key vertex is a vertex of every frame.
+  pins: with correspond="auto", #P by 2 (vertex of key 1, vertex of key 2) pairs, or a
+    sequence of K - 1 such lists, list k for keys k and k + 1 in their own numbering.
 
 Returns:
   dict with "frames" (N by #V by 2 float64; frames[keys_at[k]] is key k exactly), "times"
   (N floats f / (N - 1)), "edges", "keys_at" (list of K ints) and "segments" (one dict per
   segment: "from_key", "to_key" (indices into keys_xy), "first_frame", "last_frame",
   "triangulation" (as morph()'s), "steiner_vertices", "similarity_factored",
-  "guide_frames", "refined_frames", "milliseconds").
+  "guide_frames", "refined_frames", "milliseconds"), "places" (K dicts of #m arrays
+  "vertex", "edge", "fraction": where frame vertex i is on key k's own drawing, its vertex, or
+  -1 and a dummy at that fraction along that edge of the key's own edge list; by index
+  vertex i is i) and with correspond="auto" "correspondence" (per pair of keys, how the
+  match was found, as correspond()'s "stats").
 
 Raises:
   InvalidFigureError: a key is not a valid stick figure (its message starts "key k: ").
   InvalidArgumentError: fewer than two keys, keys of other vertex counts, bad options
     (each message names the key, the frame or the option).
-  IncompatibleFiguresError: two consecutive keys are not compatible ("key 2 and key 3: ...").
+  IncompatibleFiguresError: two consecutive keys are not compatible, or with correspond="auto"
+    cannot be matched ("key 2 and key 3: ...").
   NumericRangeError, VerificationError: as morph().
 )doc");
 }

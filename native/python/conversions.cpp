@@ -196,6 +196,14 @@ int dummies(const std::vector<sm::MatchedPlace>& places) {
 
 }  // namespace
 
+py::dict places_dict(const std::vector<sm::MatchedPlace>& places) {
+  py::dict dict;
+  dict["vertex"] = place_array(places, &sm::MatchedPlace::vertex);
+  dict["edge"] = place_array(places, &sm::MatchedPlace::edge);
+  dict["fraction"] = fraction_array(places);
+  return dict;
+}
+
 py::dict correspondence_dict(const sm::FigureCorrespondence& c) {
   py::dict dict;
   dict["source"] = place_array(c.source_places, &sm::MatchedPlace::vertex);
