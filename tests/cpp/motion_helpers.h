@@ -1,6 +1,7 @@
 // Measurements of point sets and frames shared by the rigid morph's tests
-// (test_similarity_motion, test_rigid_guide, test_guided_morph): #V by 2
-// point lists, edges as vertex pairs.
+// (test_similarity_motion, test_rigid_guide, test_guided_morph) and the key
+// poses' (test_key_pose_guide, test_key_pose_morph): #V by 2 point lists,
+// edges as vertex pairs.
 #pragma once
 
 #include <cmath>
@@ -51,6 +52,20 @@ inline void check_close(const std::vector<Vec2>& a, const std::vector<Vec2>& b, 
   REQUIRE(a.size() == b.size());
   for (std::size_t v = 0; v < a.size(); ++v)
     for (int c = 0; c < 2; ++c) CHECK(a[v][c] == Approx(b[v][c]).margin(margin));
+}
+
+/// The Euclidean distance between two frames of the same vertices, as one
+/// vector of 2 #V coordinates.
+inline double frame_distance(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
+  double sum = 0;
+  for (std::size_t v = 0; v < a.size(); ++v)
+    sum += (b[v][0] - a[v][0]) * (b[v][0] - a[v][0]) + (b[v][1] - a[v][1]) * (b[v][1] - a[v][1]);
+  return std::sqrt(sum);
+}
+
+/// The length of a whole-figure vector (a velocity, a jump).
+inline double frame_norm(const std::vector<Vec2>& v) {
+  return frame_distance(std::vector<Vec2>(v.size(), Vec2{0, 0}), v);
 }
 
 }  // namespace stickmorph::test

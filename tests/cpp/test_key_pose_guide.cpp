@@ -24,13 +24,6 @@ const std::vector<Edge>& stick_man_edges() {
   return edges;
 }
 
-double distance(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
-  double sum = 0;
-  for (std::size_t v = 0; v < a.size(); ++v)
-    sum += (b[v][0] - a[v][0]) * (b[v][0] - a[v][0]) + (b[v][1] - a[v][1]) * (b[v][1] - a[v][1]);
-  return std::sqrt(sum);
-}
-
 // The guide's velocity just before and just after time t (difference
 // quotients over dt), as whole-figure vectors.
 std::pair<std::vector<Vec2>, std::vector<Vec2>> velocities_at(const KeyPoseGuide& guide, double t, double dt) {
@@ -43,8 +36,6 @@ std::pair<std::vector<Vec2>, std::vector<Vec2>> velocities_at(const KeyPoseGuide
     }
   return {v_minus, v_plus};
 }
-
-double norm(const std::vector<Vec2>& v) { return distance(std::vector<Vec2>(v.size(), Vec2{0, 0}), v); }
 
 }  // namespace
 
@@ -83,8 +74,8 @@ TEST_CASE("the key-pose guide's velocity is continuous at interior keys", "[key_
     std::vector<Vec2> jump(v_minus.size());
     for (std::size_t v = 0; v < jump.size(); ++v) jump[v] = {v_plus[v][0] - v_minus[v][0], v_plus[v][1] - v_minus[v][1]};
     INFO("key " << k + 1);
-    CHECK(norm(v_plus) > 1);          // it moves through the key ...
-    CHECK(norm(jump) < 1e-4 * norm(v_plus));  // ... without a change of velocity
+    CHECK(frame_norm(v_plus) > 1);          // it moves through the key ...
+    CHECK(frame_norm(jump) < 1e-4 * frame_norm(v_plus));  // ... without a change of velocity
   }
 }
 
@@ -122,10 +113,10 @@ TEST_CASE("a held key stops the motion there", "[key_pose_guide]") {
   const KeyPoseGuide guide(keys, stick_man_edges(), {0, 0.5, 1}, options);
   check_close(guide.at(0.5), keys[1], 1e-12);
   const auto [v_minus, v_plus] = velocities_at(guide, 0.5, 1e-6);
-  CHECK(norm(v_minus) < 1e-4);
-  CHECK(norm(v_plus) < 1e-4);
+  CHECK(frame_norm(v_minus) < 1e-4);
+  CHECK(frame_norm(v_plus) < 1e-4);
   const auto [w_minus, w_plus] = velocities_at(guide, 0.25, 1e-6);
-  CHECK(norm(w_plus) > 1);
+  CHECK(frame_norm(w_plus) > 1);
 }
 
 TEST_CASE("a loop returns to the first key and joins itself smoothly", "[key_pose_guide]") {
@@ -146,8 +137,8 @@ TEST_CASE("a loop returns to the first key and joins itself smoothly", "[key_pos
       arrive[v][c] = (end[v][c] - before[v][c]) / dt;
       jump[v][c] = leave[v][c] - arrive[v][c];
     }
-  CHECK(norm(leave) > 1);
-  CHECK(norm(jump) < 1e-4 * norm(leave));
+  CHECK(frame_norm(leave) > 1);
+  CHECK(frame_norm(jump) < 1e-4 * frame_norm(leave));
 }
 
 TEST_CASE("turns add up along the sequence", "[key_pose_guide]") {

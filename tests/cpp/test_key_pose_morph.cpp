@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "figures.h"
+#include "motion_helpers.h"
 #include "stickmorph/compatibility.h"
 #include "stickmorph/errors.h"
 #include "stickmorph/frame_verification.h"
@@ -25,16 +26,9 @@ std::vector<StickFigure> walk_keys(int count) {
   return keys;
 }
 
-double norm_of_difference(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
-  double sum = 0;
-  for (std::size_t v = 0; v < a.size(); ++v)
-    sum += (b[v][0] - a[v][0]) * (b[v][0] - a[v][0]) + (b[v][1] - a[v][1]) * (b[v][1] - a[v][1]);
-  return std::sqrt(sum);
-}
-
 double mean_step(const std::vector<std::vector<Vec2>>& frames) {
   double total = 0;
-  for (std::size_t f = 1; f < frames.size(); ++f) total += norm_of_difference(frames[f - 1], frames[f]);
+  for (std::size_t f = 1; f < frames.size(); ++f) total += frame_distance(frames[f - 1], frames[f]);
   return total / double(frames.size() - 1);
 }
 
@@ -44,7 +38,7 @@ double jump_at(const std::vector<std::vector<Vec2>>& frames, int f) {
   for (std::size_t v = 0; v < jump.size(); ++v)
     for (int c = 0; c < 2; ++c)
       jump[v][c] = frames[f + 1][v][c] - 2 * frames[f][v][c] + frames[f - 1][v][c];
-  return norm_of_difference(std::vector<Vec2>(jump.size(), Vec2{0, 0}), jump) / mean_step(frames);
+  return frame_norm(jump) / mean_step(frames);
 }
 
 void require_every_frame_valid(const std::vector<StickFigure>& keys, const KeyPoseMorphResult& result) {
@@ -83,8 +77,8 @@ TEST_CASE("a held key stops the morph there", "[key_pose_morph]") {
   const KeyPoseMorphResult result = morph_key_poses(keys, options);
   const int f = result.key_frames[1];
   const double step = mean_step(result.frames);
-  CHECK(norm_of_difference(result.frames[std::size_t(f) - 1], result.frames[std::size_t(f)]) < 0.05 * step);
-  CHECK(norm_of_difference(result.frames[std::size_t(f)], result.frames[std::size_t(f) + 1]) < 0.05 * step);
+  CHECK(frame_distance(result.frames[std::size_t(f) - 1], result.frames[std::size_t(f)]) < 0.05 * step);
+  CHECK(frame_distance(result.frames[std::size_t(f)], result.frames[std::size_t(f) + 1]) < 0.05 * step);
   require_every_frame_valid(keys, result);
 }
 
@@ -106,7 +100,7 @@ TEST_CASE("a loop ends on the first key and passes through it smoothly", "[key_p
   std::vector<Vec2> jump(keys[0].vertices.size());
   for (std::size_t v = 0; v < jump.size(); ++v)
     for (int c = 0; c < 2; ++c) jump[v][c] = seam[2][v][c] - 2 * seam[1][v][c] + seam[0][v][c];
-  CHECK(norm_of_difference(std::vector<Vec2>(jump.size(), Vec2{0, 0}), jump) < 0.25 * mean_step(result.frames));
+  CHECK(frame_norm(jump) < 0.25 * mean_step(result.frames));
 }
 
 TEST_CASE("key frames given by the caller are where the keys land", "[key_pose_morph]") {
