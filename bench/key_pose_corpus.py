@@ -7,7 +7,7 @@ how smooth the motion is at the interior keys. This writes the sequences it is m
 vertex, in K poses.
 
     /usr/bin/python3 bench/key_pose_corpus.py OUT_DIR [--seed N] [--build-dir build]
-                     [--per-kind N]
+                     [--per-kind N] [--redrawn]
 
 Kinds:
   cycle      a skeleton (a humanoid figure, a quadruped, a spider) whose joint angles follow one smooth
@@ -110,6 +110,29 @@ def glyph_sequence(letter, rng, keys, gentle):
     return figures, {"letter": letter, "turn_deg": round(turn, 1)}
 
 
+def redrawn(points, edges, rng):
+    """The key as drawn on its own, for `--correspond auto`: about a third of its edges split
+    into 2 to 4 pieces (points evenly along the edge, so the drawing is the same), the
+    vertices numbered in a random order and the edges listed in another."""
+    points = [tuple(p) for p in points]
+    pieces = []
+    for a, b in edges:
+        cut = rng.randint(2, 4) if rng.random() < 0.35 else 1
+        chain = [a]
+        for j in range(1, cut):
+            f = j / cut
+            points.append((points[a][0] + f * (points[b][0] - points[a][0]),
+                           points[a][1] + f * (points[b][1] - points[a][1])))
+            chain.append(len(points) - 1)
+        chain.append(b)
+        pieces += list(zip(chain, chain[1:]))
+    order = list(range(len(points)))
+    rng.shuffle(order)  # order[new] = old
+    new_of = {old: new for new, old in enumerate(order)}
+    rng.shuffle(pieces)
+    return [points[old] for old in order], [[new_of[a], new_of[b]] for a, b in pieces]
+
+
 def compatible_with_first(cli, paths):
     """Index of the first key that `stickmorph check` finds incompatible with key 1, or None."""
     for k, path in enumerate(paths[1:], start=1):
@@ -131,6 +154,9 @@ def main(argv=None):
     ap.add_argument("--seed", type=int, default=28)
     ap.add_argument("--build-dir", type=pathlib.Path, default=mc.REPO / "build")
     ap.add_argument("--per-kind", type=int, default=4, help="sequences per kind and figure (default 4)")
+    ap.add_argument("--redrawn", action="store_true",
+                    help="also write every key drawn on its own (NAME.drawnK.json: edges split, vertices and "
+                         "edges renumbered), listed as the entry's \"drawn\", for --correspond auto")
     args = ap.parse_args(argv)
     cli = args.build_dir / "stickmorph"
     if not cli.exists():
@@ -165,7 +191,15 @@ def main(argv=None):
                 for k, (points, edges) in enumerate(figures):
                     files.append(f"{name}.key{k + 1}.json")
                     mc.write_figure(args.out / files[-1], f"{name} key {k + 1}", points, edges)
+                drawn = []
+                if args.redrawn:
+                    redraw_rng = random.Random(seed ^ 0x5eed)
+                    for k, (points, edges) in enumerate(figures):
+                        drawn.append(f"{name}.drawn{k + 1}.json")
+                        mc.write_figure(args.out / drawn[-1], f"{name} key {k + 1} drawn",
+                                        *redrawn(points, edges, redraw_rng))
                 manifest.append({"name": name, "kind": kind, "figure": figure, "keys": files,
+                                 **({"drawn": drawn} if drawn else {}),
                                  "vertices": len(figures[0][0]), "edges": len(figures[0][1]),
                                  "gentle": round(gentle, 3), **tags})
     (args.out / "manifest.json").write_text(json.dumps(manifest, indent=1) + "\n")

@@ -38,7 +38,7 @@ def refused(result, *words):
 @pytest.fixture(scope="module")
 def corpus(cli, tmp_path_factory):
     folder = tmp_path_factory.mktemp("key_poses")
-    assert kpc.main([str(folder), "--build-dir", str(cli.parent), "--per-kind", "2"]) == 0
+    assert kpc.main([str(folder), "--build-dir", str(cli.parent), "--per-kind", "2", "--redrawn"]) == 0
     return folder, json.loads((folder / "manifest.json").read_text())
 
 
@@ -148,9 +148,71 @@ def test_bad_sequences_are_refused_naming_the_key_and_nothing_is_written(cli, co
     refused(run(cli, "morph", *paths, "-o", out, "--hold", "4"), "--hold names keys 1 to 3")
     refused(run(cli, "morph", *paths, "-o", out, "--easing", "in-out"), "--easing")
     refused(run(cli, "morph", *paths, "-o", out, "--method", "linear"), "--method rigid only")
-    refused(run(cli, "morph", *paths, "-o", out, "--correspond", "auto"), "--correspond")
+    refused(run(cli, "morph", *paths, "-o", out, "--pin", "0:0"), "--pin needs --correspond auto")
+    # Matched, a mirrored skeleton may well be the same figure (left and right limbs swapped);
+    # another figure altogether is not.
+    refused(run(cli, "morph", paths[0], paths[1], other, "-o", out, "--correspond", "auto"), "key 2 and key 3")
+    refused(run(cli, "morph", *paths, "-o", out, "--correspond", "auto", "--pin", "99999:0"),
+            "key 1 and key 2", "99999")
     refused(run(cli, "morph", *paths, "-o", out, "--turns", "1,2,3"), "--turns")
     refused(run(cli, "morph", *paths, "-o", paths[1]), "--output", "KEY2.json")
     refused(run(cli, "morph", paths[0], "-o", out), "missing argument TARGET.json")
     assert not out.exists()
     assert sorted(p.name for p in tmp_path.iterdir()) == ["mirrored.json", "other.json"]
+
+
+def check_subdivision(frame, edges, key_points, key_edges, place):
+    """frame (the common figure on key k, with `edges`) is a subdivision of key k's own drawing
+    as `place` (the file's keys[k] entry) says: every key vertex exactly once at its exact
+    position, every dummy at its fraction of its key edge, and each key edge exactly the
+    chain of common edges through the vertices on it, in order."""
+    vertex, edge, fraction = (np.asarray(place[name]) for name in ("vertex", "edge", "fraction"))
+    size = np.ptp(key_points, axis=0).max()
+    assert sorted(vertex[vertex >= 0].tolist()) == list(range(len(key_points)))
+    assert np.array_equal(frame[vertex >= 0], key_points[vertex[vertex >= 0]])
+    on_edge = {e: [(0.0, None), (1.0, None)] for e in range(len(key_edges))}
+    for i in np.flatnonzero(vertex < 0):
+        a, b = key_edges[edge[i]]
+        assert 0 < fraction[i] < 1
+        expected = key_points[a] + fraction[i] * (key_points[b] - key_points[a])
+        assert np.linalg.norm(frame[i] - expected) <= 1e-9 * size
+        on_edge[edge[i]].append((fraction[i], i))
+    common_of = {int(v): i for i, v in enumerate(vertex) if v >= 0}
+    chains = set()
+    for e, points in on_edge.items():
+        a, b = key_edges[e]
+        ordered = [common_of[a] if i is None and f == 0 else common_of[b] if i is None else i
+                   for f, i in sorted(points, key=lambda p: p[0])]
+        chains |= {frozenset(pair) for pair in zip(ordered, ordered[1:])}
+    assert chains == {frozenset(map(int, e)) for e in edges}
+
+
+def test_keys_drawn_separately_are_matched_onto_one_figure(cli, corpus, tmp_path):
+    """`--correspond auto`: keys of different vertex counts and numbering; frame F_k is a
+    subdivision of key k's drawing, every key vertex a frame vertex, every frame valid, and
+    the motion as smooth as by index."""
+    folder, manifest = corpus
+    entries = [e for e in manifest if len(e["keys"]) >= 3]
+    jumps = []
+    for entry in entries[::2]:
+        paths = [folder / name for name in entry["drawn"]]
+        drawings = [sm.mq.read_figure(p) for p in paths]
+        assert len({len(points) for points, _ in drawings}) > 1 or len(drawings[0][0]) != entry["vertices"]
+        out = tmp_path / f"{entry['name']}.json"
+        result = run(cli, "morph", *paths, "-o", out, "--correspond", "auto")
+        assert result.returncode == 0, (entry["name"], result.stderr)
+        doc = json.loads(out.read_text())
+        frames = np.asarray(doc["frames"], dtype=float)
+        edges = [tuple(e) for e in doc["edges"]]
+        keys_at = [k["frame"] for k in doc["keys"]]
+        assert keys_at == sm.key_frames(len(paths), len(frames))
+        assert doc["stats"]["correspondence"]["matched_vertices"] == frames.shape[1]
+        assert len(doc["stats"]["correspondence"]["pairs"]) == len(paths) - 1
+        for k, (points, key_edges) in enumerate(drawings):
+            check_subdivision(frames[keys_at[k]], edges, np.asarray(points, dtype=float), key_edges,
+                              doc["keys"][k])
+        m = sm.measure(frames, [frames[f] for f in keys_at], edges, keys_at)
+        assert m["invalid_frames"] == [], entry["name"]
+        if m["jump_median"] is not None:
+            jumps.append(m["jump_median"])
+    assert jumps and np.median(jumps) <= 0.25

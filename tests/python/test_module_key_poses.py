@@ -17,11 +17,21 @@ sm = load_script("sequence_motion")
 @pytest.fixture(scope="module")
 def sequence(cli, tmp_path_factory):
     folder = tmp_path_factory.mktemp("key_poses")
-    assert kpc.main([str(folder), "--build-dir", str(cli.parent), "--per-kind", "1"]) == 0
+    assert kpc.main([str(folder), "--build-dir", str(cli.parent), "--per-kind", "1", "--redrawn"]) == 0
     entry = next(e for e in json.loads((folder / "manifest.json").read_text()) if len(e["keys"]) >= 3)
     paths = [folder / name for name in entry["keys"]]
     docs = [json.loads(p.read_text()) for p in paths]
     return paths, [d["vertices"] for d in docs], docs[0]["edges"]
+
+
+@pytest.fixture(scope="module")
+def drawn(sequence):
+    """The same sequence's keys drawn on their own (key_pose_corpus.py --redrawn)."""
+    paths, _, _ = sequence
+    entry = next(e for e in json.loads((paths[0].parent / "manifest.json").read_text())
+                 if e["keys"][0] == paths[0].name)
+    docs = [json.loads((paths[0].parent / name).read_text()) for name in entry["drawn"]]
+    return [d["vertices"] for d in docs], [d["edges"] for d in docs]
 
 
 def test_the_module_and_the_cli_give_the_same_motion(cli, sequence, tmp_path):
@@ -75,3 +85,50 @@ def test_bad_arguments_are_typed_errors_naming_what(sequence):
     with pytest.raises(stickmorph.IncompatibleFiguresError, match="key 2 and key 3"):
         stickmorph.morph_key_poses(mirrored, edges)
     assert issubclass(stickmorph.InvalidArgumentError, ValueError)
+
+
+def test_keys_drawn_separately_match_as_the_cli_matches_them(cli, sequence, drawn, tmp_path):
+    paths, _, _ = sequence
+    keys, edges = drawn
+    result = stickmorph.morph_key_poses(keys, edges, correspond="auto", frames=61)
+    m = result["frames"].shape[1]
+    assert m >= max(len(k) for k in keys) and result["edges"].shape[1] == 2
+    assert len(result["places"]) == len(keys) and len(result["correspondence"]) == len(keys) - 1
+    for k, (key, place) in enumerate(zip(keys, result["places"])):
+        frame = result["frames"][result["keys_at"][k]]
+        own = place["vertex"] >= 0
+        assert sorted(place["vertex"][own]) == list(range(len(key)))
+        assert np.array_equal(frame[own], np.asarray(key, dtype=float)[place["vertex"][own]])
+        assert ((place["fraction"][~own] > 0) & (place["fraction"][~own] < 1)).all()
+    # The CLI, given the same drawings, writes the same frames.
+    files = []
+    for k, (key, key_edges) in enumerate(zip(*drawn)):
+        files.append(tmp_path / f"drawn{k}.json")
+        files[-1].write_text(json.dumps({"vertices": key, "edges": key_edges}))
+    out = tmp_path / "cli.json"
+    run = subprocess.run([str(cli), "morph", *map(str, files), "-o", str(out), "--frames", "61", "--correspond", "auto"],
+                         capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stderr
+    assert np.array_equal(np.asarray(json.loads(out.read_text())["frames"]), result["frames"])
+    # By index, "places" says every key's own vertex i.
+    by_index = stickmorph.morph_key_poses(sequence[1], sequence[2], frames=21)
+    assert all(np.array_equal(p["vertex"], np.arange(len(sequence[1][0]))) for p in by_index["places"])
+
+
+def test_pins_for_drawn_keys(drawn):
+    keys, edges = drawn
+    with pytest.raises(stickmorph.InvalidArgumentError, match="correspond='auto'"):
+        stickmorph.morph_key_poses(keys, edges, pins=[(0, 0)])
+    with pytest.raises(stickmorph.InvalidArgumentError, match="key 1 and key 2: .*99999"):
+        stickmorph.morph_key_poses(keys, edges, correspond="auto", pins=[(99999, 0)])
+    with pytest.raises(stickmorph.InvalidArgumentError, match="one edge list for every key, or one per key"):
+        stickmorph.morph_key_poses(keys, edges[:2], correspond="auto")
+    free = stickmorph.morph_key_poses(keys, edges, correspond="auto", frames=21)
+    # Pin, for the second pair, what the free match found: the same match (the dummies' places
+    # may differ in the last bits: the pinned search fits its own similarity).
+    p1, p2 = free["places"][1]["vertex"], free["places"][2]["vertex"]
+    i = next(i for i in range(len(p1)) if p1[i] >= 0 and p2[i] >= 0)
+    pinned = stickmorph.morph_key_poses(keys, edges, correspond="auto", frames=21, pins=[[], [(int(p1[i]), int(p2[i]))]])
+    for a, b in zip(free["places"], pinned["places"]):
+        assert np.array_equal(a["vertex"], b["vertex"]) and np.array_equal(a["edge"], b["edge"])
+    assert np.allclose(pinned["frames"], free["frames"], rtol=0, atol=1e-12)
