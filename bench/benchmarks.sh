@@ -27,6 +27,10 @@
 #                       rigid (if `stickmorph morph --help` lists it),
 #                       barycentric, linear and arap; filmstrips of the worst
 #                       pairs go to docs/benchmarks/motion/
+#   key_pose_corpus/    bench/key_pose_corpus.py --redrawn: key-pose sequences
+#   sequences.json      bench/sequence_motion.py on it (issue 28): the sequence
+#                       morph against chained pair morphs and straight-line
+#                       (shape-key) blending, and keys drawn separately
 #   run.json            machine, date, commit, command, runtime
 # and then bench/make_benchmarks.py (Debian's /usr/bin/python3 with
 # python3-matplotlib) writes BENCHMARKS.md and the SVG plots from those files.
@@ -106,8 +110,8 @@ cmake --build "$build" -j2 --target stickmorph_benchmark stickmorph_benchmark_mo
   stickmorph_benchmark_correspondence stickmorph_benchmark_scrub stickmorph
 
 mkdir -p "$data"
-rm -f "$data/polygon_pairs.json" "$data/morph.jsonl" "$data/correspondence.json" "$data/motion.json" \
-  "$data/scrub.jsonl" "$data/scrub_large.jsonl" "$data/run.json"
+rm -rf "$data/polygon_pairs.json" "$data/morph.jsonl" "$data/correspondence.json" "$data/motion.json" \
+  "$data/scrub.jsonl" "$data/scrub_large.jsonl" "$data/run.json" "$data/sequences.json" "$data/key_pose_corpus"
 
 echo "==== polygon-pair corpus (tests/data/polygon_pairs) ===="
 "$build/stickmorph_benchmark" --json "$data/polygon_pairs.json" "$source_dir/tests/data/polygon_pairs" \
@@ -157,6 +161,14 @@ tail -1 "$data/motion_corpus.log"
   --filmstrip docs/benchmarks/motion --filmstrip-worst 1 --filmstrip-pairs special_self_turn_180 \
   --json "$data/motion.json" > "$data/motion.md" 2> "$data/motion.log" \
   || { tail -20 "$data/motion.log" >&2; exit 1; }
+
+echo "==== key poses (issue 28: bench/key_pose_corpus.py --redrawn, bench/sequence_motion.py) ===="
+/usr/bin/python3 bench/key_pose_corpus.py "$data/key_pose_corpus" --build-dir "$build" --redrawn \
+  > "$data/key_pose_corpus.log"
+tail -1 "$data/key_pose_corpus.log"
+/usr/bin/python3 bench/sequence_motion.py "$data/key_pose_corpus" --build-dir "$build" \
+  --json "$data/sequences.json" > "$data/sequences.md"
+sed -n '/^medians/,$p' "$data/sequences.md"
 
 runtime=$(( $(date +%s) - start ))
 cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Measure motions through key poses (issue 28): validity, keys hit, smoothness at the keys.
 
-    /usr/bin/python3 bench/sequence_motion.py CORPUS --build-dir build [--mode chained]
+    /usr/bin/python3 bench/sequence_motion.py CORPUS --build-dir build [--mode chained ...]
                      [--extra "--method rigid"] [--json FILE]
 
 CORPUS is a folder bench/key_pose_corpus.py wrote. Each sequence of K keys gets N = 49 S + 1
@@ -12,6 +12,11 @@ frames (S = K - 1 segments) with key k at F_k = round(k (N-1) / (K-1)), as docs/
              F_k+1 - F_k + 1`), joined at the keys: the baseline
   sequence   one `stickmorph morph KEY1 ... KEYK --frames N` (issue 28's sequence morph; a
              CLI without it is reported, not measured)
+  linear     each vertex on straight lines from key to key at constant speed per segment:
+             what Blender's shape-key animation does between pose-to-pose keys
+  matched    the sequence morph of the keys drawn on their own (the corpus's "drawn" files,
+             key_pose_corpus.py --redrawn) with `--correspond auto`: measured on the common
+             figure, the key error over every key vertex (the file's "keys" places)
 
 and measured, X[f] being frame f's vertex positions as one vector:
   valid      every frame is a drawing of the figure with key 1's rotation system, parts,
@@ -46,6 +51,7 @@ import multipart_check as topo  # noqa: E402  (the exact validity of a frame, in
 TIMEOUT_SECONDS = 600
 FRAMES_PER_SEGMENT = 49
 PASS_COSINE = 0.5
+MODES = ("chained", "sequence", "linear", "matched")
 
 
 def key_frames(keys, frames):
@@ -73,6 +79,37 @@ def sequence(cli, paths, frames, extra, tmp):
             return None  # a stickmorph from before issue 28
         raise RuntimeError(r.stderr.strip() or f"exit {r.returncode}")
     return np.asarray(json.loads(out.read_text())["frames"], dtype=float)
+
+
+def linear(keys, keys_at):
+    """Straight lines from key to key, each segment at constant speed (shape-key blending)."""
+    frames = [keys[0]]
+    for s in range(len(keys) - 1):
+        span = keys_at[s + 1] - keys_at[s]
+        frames += [keys[s] + (f / span) * (keys[s + 1] - keys[s]) for f in range(1, span + 1)]
+    return np.asarray(frames)
+
+
+def matched(cli, paths, frames, extra, tmp):
+    """The sequence morph of separately drawn keys (`--correspond auto`): its frames, edges, key
+    frames and the key error over every vertex of every key (the "keys" entries' places)."""
+    out = pathlib.Path(tmp) / "matched.json"
+    cmd = [str(cli), "morph", *map(str, paths), "-o", str(out), "--frames", str(frames), "--correspond", "auto",
+           *extra]
+    r = subprocess.run(cmd, capture_output=True, text=True, timeout=TIMEOUT_SECONDS)
+    if r.returncode != 0:
+        raise RuntimeError(r.stderr.strip() or f"exit {r.returncode}")
+    doc = json.loads(out.read_text())
+    motion = np.asarray(doc["frames"], dtype=float)
+    keys_at = [k["frame"] for k in doc["keys"]]
+    error = 0.0
+    for path, key in zip(paths, doc["keys"]):
+        points, _ = mq.read_figure(path)
+        size = max(float(np.ptp(points, axis=0).max()), 1e-300)
+        vertex = np.asarray(key["vertex"])
+        own = vertex >= 0
+        error = max(error, float(np.abs(motion[key["frame"]][own] - points[vertex[own]]).max()) / size)
+    return motion, [tuple(e) for e in doc["edges"]], keys_at, error
 
 
 def measure(frames, keys, edges, keys_at):
@@ -103,6 +140,18 @@ def measure(frames, keys, edges, keys_at):
             "edge_dev_median": float(np.median(edge_devs))}
 
 
+def profiles(frames):
+    """Per frame, over the mean step: the speed |X[f+1] - X[f]| and the change of velocity
+    |X[f+1] - 2 X[f] + X[f-1]| (the jump of the module docstring at every frame), which the
+    report plots."""
+    flat = frames.reshape(len(frames), -1)
+    steps = np.linalg.norm(np.diff(flat, axis=0), axis=1)
+    mean_step = steps.mean() or 1e-300
+    changes = np.linalg.norm(np.diff(flat, 2, axis=0), axis=1)
+    return {"speeds": (steps / mean_step).round(5).tolist(),
+            "velocity_changes": (changes / mean_step).round(5).tolist()}
+
+
 def fmt(value, spec="{:.3f}"):
     return "-" if value is None else spec.format(value)
 
@@ -111,8 +160,9 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("corpus", type=pathlib.Path, help="folder with manifest.json (bench/key_pose_corpus.py)")
     ap.add_argument("--build-dir", type=pathlib.Path, default=mq.REPO / "build")
-    ap.add_argument("--mode", action="append", choices=("chained", "sequence"),
-                    help="which motions to measure (repeatable; default both)")
+    ap.add_argument("--mode", action="append", choices=MODES,
+                    help="which motions to measure (repeatable; default chained, sequence and linear, and "
+                         "matched where the corpus has drawn keys)")
     ap.add_argument("--extra", default="", help="more `stickmorph morph` arguments, e.g. \"--method rigid\"")
     ap.add_argument("--json", type=pathlib.Path, help="write the rows here")
     args = ap.parse_args(argv)
@@ -122,7 +172,7 @@ def main(argv=None):
         if not path.exists():
             print(f"error: {path} does not exist", file=sys.stderr)
             return 2
-    modes = args.mode or ["chained", "sequence"]
+    modes = args.mode or list(MODES)
     extra = shlex.split(args.extra)
     rows, unsupported = [], False
     with tempfile.TemporaryDirectory(prefix="sequence_motion_") as tmp:
@@ -133,10 +183,21 @@ def main(argv=None):
             frames = FRAMES_PER_SEGMENT * (len(keys) - 1) + 1
             keys_at = key_frames(len(keys), frames)
             for mode in modes:
+                if mode == "matched" and "drawn" not in entry:
+                    continue
                 row = {"name": entry["name"], "kind": entry["kind"], "keys": len(keys), "vertices": len(keys[0]),
                        "mode": mode}
                 try:
+                    if mode == "matched":
+                        drawn = [args.corpus / f for f in entry["drawn"]]
+                        motion, common_edges, common_at, key_error = matched(cli, drawn, frames, extra, tmp)
+                        row.update(measure(motion, [motion[f] for f in common_at], common_edges, common_at))
+                        row.update(key_error=key_error, vertices=int(motion.shape[1]))
+                        row.update(profiles(motion))
+                        rows.append(row)
+                        continue
                     motion = (chained(cli, paths, keys_at, extra, tmp) if mode == "chained"
+                              else linear(keys, keys_at) if mode == "linear"
                               else sequence(cli, paths, frames, extra, tmp))
                 except RuntimeError as error:
                     row["error"] = str(error)
@@ -146,6 +207,11 @@ def main(argv=None):
                     unsupported = True
                     continue
                 row.update(measure(motion, keys, edges, keys_at))
+                row["keys_at"] = keys_at
+                row.update(profiles(motion))
+                if mode == "sequence" and not any(r.get("filmstrip") for r in rows):
+                    # One sequence's frames for the report's filmstrip (make_benchmarks.py).
+                    row["filmstrip"] = {"frames": motion.tolist(), "edges": [list(e) for e in edges]}
                 rows.append(row)
     print("| sequence | mode | keys | V | valid | key error | jump median | pass speed min | edge dev median |")
     print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")

@@ -10,4 +10,5 @@ is the command; bench/README.md lists the modules):
   speed.py           issue 15: a frame against a fresh LU, scrubbing, the total's growth
   motion.py          motion quality (issue 12) from motion.json
   correspondence.py  correspondence against size (issue 13) from correspondence.json
+  sequences.py       key poses (issue 28) from sequences.json: smoothness at the keys, filmstrip
 """

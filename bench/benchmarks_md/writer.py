@@ -7,12 +7,14 @@ from .common import (COLORS, DASHES, FIT_MIN_N, METHODS, fmt_int, fmt_ms, fmt_ra
                      loglog_svg, table)
 from .correspondence import correspondence_section
 from .motion import motion_section, motion_targets_met
+from .sequences import sequences_section
 from .speed import frame_cost_section, scrub_section, speed_headline
 from .stages import stages_section
 from .steiner import polygon_pairs_section, steiner_section
 
 
-def write_report(records, polygon_pairs, run, out_path, plot_dir, motion=None, correspondence=None, scrub=None):
+def write_report(records, polygon_pairs, run, out_path, plot_dir, motion=None, correspondence=None, scrub=None,
+                 sequences=None):
     cells, families, sizes = index_cells(records)
     os.makedirs(plot_dir, exist_ok=True)
     plot_rel = os.path.relpath(plot_dir, os.path.dirname(os.path.abspath(out_path)))
@@ -31,6 +33,7 @@ def write_report(records, polygon_pairs, run, out_path, plot_dir, motion=None, c
 
     md += motion_section(motion, out_path, plot_dir)
     md += correspondence_section(correspondence, out_path, plot_dir)
+    md += sequences_section(sequences, out_path, plot_dir)
 
     with open(out_path, "w", encoding="utf-8") as f:
         f.write("\n".join(md).rstrip() + "\n")
