@@ -1,10 +1,12 @@
 // The morph through a sequence of key poses; see key_pose_morph.h.
 #include "stickmorph/key_pose_morph.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "stickmorph/argument_limits.h"
@@ -132,12 +134,48 @@ void check_key_pose_options(const KeyPoseMorphOptions& options, std::size_t coun
       check_pins_need_auto(options.correspond, pins, OptionSpelling::Keyword, "");
 }
 
-// The morph of keys on one vertex set (by index, or matched).
-KeyPoseMorphResult morph_common_keys(const std::vector<StickFigure>& keys, const KeyPoseMorphOptions& options) {
+}  // namespace
+
+// The solver's state: the keys on one vertex set (by index, or matched),
+// their checked pairs, the guide through all of them and one GuidedMorph
+// per segment. The pairs and decompositions stay here, beside the morphs
+// made from them.
+struct KeyPoseMorphSolver::State {
+  std::vector<StickFigure> keys;
+  std::optional<KeyPoseCorrespondence> correspondence;
+  int frames = 0;
+  std::vector<int> key_frames;
+  std::vector<Decomposition> decompositions;
+  std::vector<CompatiblePair> pairs;
+  std::shared_ptr<const KeyPoseGuide> guide;
+  std::vector<GuidedMorph> morphs;
+  std::vector<KeyPoseSegment> segments;
+  bool verify = true;
+  FrameCheck check = FrameCheck::Certificate;
+};
+
+KeyPoseMorphSolver::KeyPoseMorphSolver(const std::vector<StickFigure>& input_keys, const KeyPoseMorphOptions& options)
+    : state_(std::make_unique<State>()) {
+  if (input_keys.size() < 2)
+    throw InvalidArgumentError("a key-pose sequence needs at least two keys, got " +
+                               std::to_string(input_keys.size()));
+  check_key_pose_options(options, input_keys.size());
+  State& st = *state_;
+  if (options.correspond == CorrespondenceMode::Auto) {
+    KeyPoseCorrespondenceOptions matching;
+    matching.pins = options.pins;
+    st.correspondence = correspond_key_poses(input_keys, matching);
+    st.keys = st.correspondence->keys;
+  } else {
+    st.keys = input_keys;
+  }
+  const std::vector<StickFigure>& keys = st.keys;
   check_same_graph(keys);
   const std::size_t count = keys.size();
   const std::size_t segments = options.loop ? count : count - 1;
-  const auto [frames, key_frames] = frame_plan(options, count, segments);
+  std::tie(st.frames, st.key_frames) = frame_plan(options, count, segments);
+  const int frames = st.frames;
+  const std::vector<int>& key_frames = st.key_frames;
 
   // The keys at their own scale only, for now: the working scale that
   // brings a pair into the numeric stages' range (working_scale.h) is not
@@ -151,16 +189,14 @@ KeyPoseMorphResult morph_common_keys(const std::vector<StickFigure>& keys, const
 
   // Algorithm 1 once per key; each segment's pair checked (the keys must be
   // compatible from one to the next, which makes them all compatible).
-  std::vector<Decomposition> decompositions;
-  decompositions.reserve(count);
-  for (const StickFigure& key : keys) decompositions.push_back(decompose(key));
-  std::vector<CompatiblePair> pairs;
-  pairs.reserve(segments);
+  st.decompositions.reserve(count);
+  for (const StickFigure& key : keys) st.decompositions.push_back(decompose(key));
+  st.pairs.reserve(segments);  // never reallocated: the morphs are made from them
   for (std::size_t s = 0; s < segments; ++s) {
     const std::size_t next = (s + 1) % count;
     check_numeric_range(keys[s], keys[next], MorphMethod::Rigid);
     try {
-      pairs.push_back(CompatiblePair::check(keys[s], decompositions[s], keys[next], decompositions[next]));
+      st.pairs.push_back(CompatiblePair::check(keys[s], st.decompositions[s], keys[next], st.decompositions[next]));
     } catch (const IncompatibleFiguresError& error) {
       throw IncompatibleFiguresError(error.kind(), key_name(s) + " and " + key_name(next) + ": " + error.what(),
                                      error.vertices());
@@ -178,21 +214,15 @@ KeyPoseMorphResult morph_common_keys(const std::vector<StickFigure>& keys, const
   guide_options.hold = options.hold;
   guide_options.rotation = options.rotation;
   for (long long t : options.turns) guide_options.turns.push_back(int(t));
-  const auto guide = std::make_shared<const KeyPoseGuide>(key_vertices, keys[0].edges, key_times, guide_options);
-  const std::vector<double>& knots = guide->knot_times();
+  st.guide = std::make_shared<const KeyPoseGuide>(key_vertices, keys[0].edges, key_times, guide_options);
+  const std::vector<double>& knots = st.guide->knot_times();
 
   FigureTriangulationOptions paper;
   paper.method = options.steiner.value_or(SteinerMethod::Improved);
   paper.enclosure_sides = options.enclosure_sides ? int(*options.enclosure_sides) : kDefaultEnclosureSides;
   const WeightKind weights = options.weights.value_or(WeightKind::MeanValue);
-  const bool verify = options.verify.value_or(true);
-  const FrameCheck check = options.frame_check.value_or(FrameCheck::Certificate);
-
-  KeyPoseMorphResult result;
-  result.key_frames = key_frames;
-  result.times.resize(std::size_t(frames));
-  for (int f = 0; f < frames; ++f) result.times[std::size_t(f)] = double(f) / last;
-  const std::size_t n = keys[0].vertices.size();
+  st.verify = options.verify.value_or(true);
+  st.check = options.frame_check.value_or(FrameCheck::Certificate);
   for (std::size_t s = 0; s < segments; ++s) {
     const std::size_t next = (s + 1) % count;
     KeyPoseSegment segment;
@@ -202,69 +232,108 @@ KeyPoseMorphResult morph_common_keys(const std::vector<StickFigure>& keys, const
     segment.last_frame = next == 0 ? frames - 1 : key_frames[next];
     const RotationDirection direction = options.rotation.empty() ? RotationDirection::Short : options.rotation[s];
     const int extra_turns = options.turns.empty() ? 0 : int(options.turns[s]);
-    const CompatiblePair& pair = pairs[s];
+    const CompatiblePair& pair = st.pairs[s];
     const SimilarityMotion similarity =
         fit_similarity(pair.source().vertices, pair.target().vertices, direction, extra_turns);
     segment.stats.similarity = similarity;
     const double t0 = knots[s], t1 = knots[s + 1];
-    GuidedMorph morph = internal::prepare_guided_morph(
+    const std::shared_ptr<const KeyPoseGuide>& guide = st.guide;
+    st.morphs.push_back(internal::prepare_guided_morph(
         pair, similarity,
         [&]() -> std::unique_ptr<const GuideTrajectory> { return std::make_unique<const KeyPoseStretch>(guide, t0, t1); },
-        paper, weights, Easing::None, segment.stats);
-    const std::string context =
-        "segment " + std::to_string(s + 1) + " (" + key_name(s) + " to " + key_name(next) + "), ";
-    const int span = segment.last_frame - segment.first_frame;
-    const auto start = std::chrono::steady_clock::now();
-    // Each key once: a segment after the first starts at the frame the one
-    // before ended on, which is that key exactly in both.
-    for (int f = segment.first_frame + (s == 0 ? 0 : 1); f <= segment.last_frame; ++f) {
-      const double t = f == segment.last_frame ? 1.0 : double(f - segment.first_frame) / double(span);
-      GuidedFrame frame;
-      try {
-        frame = morph.frame(t, f, verify, context, check);
-      } catch (const InvalidArgumentError& error) {
-        throw InternalError(std::string("morph_key_poses: the engine refused its own intermediate result: ") +
-                            error.what());
-      }
-      if (frame.fit == GuideFit::Exact) ++segment.stats.guide_exact_frames;
-      if (frame.fit == GuideFit::Blended) ++segment.stats.guide_blended_frames;
-      if (frame.fit == GuideFit::Barycentric) ++segment.stats.guide_barycentric_frames;
-      if (frame.refined) ++segment.stats.refined_frames;
-      result.frames.emplace_back(frame.positions.begin(), frame.positions.begin() + std::ptrdiff_t(n));
-    }
-    segment.stats.morph_ms =
-        segment.stats.factorize_ms +
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    const GuidedMorphStats& guided = morph.stats();
-    segment.stats.solve_ms = guided.guide_ms + guided.solve_ms;
-    segment.stats.verify_ms = guided.verify_ms;
-    segment.stats.factorizations = guided.factorizations;
-    segment.triangulation = morph.triangulation();
-    result.segments.push_back(std::move(segment));
+        paper, weights, Easing::None, segment.stats));
+    segment.stats.morph_ms = segment.stats.factorize_ms;
+    segment.triangulation = st.morphs.back().triangulation();
+    st.segments.push_back(std::move(segment));
   }
+}
+
+KeyPoseMorphSolver::~KeyPoseMorphSolver() = default;
+KeyPoseMorphSolver::KeyPoseMorphSolver(KeyPoseMorphSolver&&) noexcept = default;
+KeyPoseMorphSolver& KeyPoseMorphSolver::operator=(KeyPoseMorphSolver&&) noexcept = default;
+
+int KeyPoseMorphSolver::frame_count() const { return state_->frames; }
+const std::vector<int>& KeyPoseMorphSolver::key_frames() const { return state_->key_frames; }
+const std::vector<StickFigure>& KeyPoseMorphSolver::keys() const { return state_->keys; }
+const std::optional<KeyPoseCorrespondence>& KeyPoseMorphSolver::correspondence() const {
+  return state_->correspondence;
+}
+const std::vector<KeyPoseSegment>& KeyPoseMorphSolver::segments() const { return state_->segments; }
+
+std::vector<Vec2> KeyPoseMorphSolver::segment_frame(std::size_t s, double u, int label) {
+  State& st = *state_;
+  KeyPoseSegment& segment = st.segments[s];
+  const std::string context = "segment " + std::to_string(s + 1) + " (" + key_name(std::size_t(segment.from_key)) +
+                              " to " + key_name(std::size_t(segment.to_key)) + "), ";
+  const auto start = std::chrono::steady_clock::now();
+  GuidedFrame frame;
+  try {
+    frame = st.morphs[s].frame(u, label, st.verify, context, st.check);
+  } catch (const InvalidArgumentError& error) {
+    throw InternalError(std::string("morph_key_poses: the engine refused its own intermediate result: ") +
+                        error.what());
+  }
+  MorphStickFiguresStats& stats = segment.stats;
+  if (frame.fit == GuideFit::Exact) ++stats.guide_exact_frames;
+  if (frame.fit == GuideFit::Blended) ++stats.guide_blended_frames;
+  if (frame.fit == GuideFit::Barycentric) ++stats.guide_barycentric_frames;
+  if (frame.refined) ++stats.refined_frames;
+  stats.morph_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const GuidedMorphStats& guided = st.morphs[s].stats();
+  stats.solve_ms = guided.guide_ms + guided.solve_ms;
+  stats.verify_ms = guided.verify_ms;
+  stats.factorizations = guided.factorizations;
+  const std::size_t n = st.keys[0].vertices.size();
+  return {frame.positions.begin(), frame.positions.begin() + std::ptrdiff_t(n)};
+}
+
+std::vector<Vec2> KeyPoseMorphSolver::frame(int f) {
+  const State& st = *state_;
+  if (f < 0 || f >= st.frames)
+    throw InvalidArgumentError("frame must be between 0 and " + std::to_string(st.frames - 1) + ", got " +
+                               std::to_string(f));
+  // The segment whose frames (first_frame, last_frame] hold f; frame 0 is
+  // the first segment's first.
+  std::size_t s = 0;
+  while (s + 1 < st.segments.size() && f > st.segments[s].last_frame) ++s;
+  const KeyPoseSegment& segment = st.segments[s];
+  const int span = segment.last_frame - segment.first_frame;
+  const double u = f == segment.last_frame ? 1.0 : double(f - segment.first_frame) / double(span);
+  return segment_frame(s, u, f);
+}
+
+std::vector<Vec2> KeyPoseMorphSolver::solve(double time) {
+  const State& st = *state_;
+  if (!(time >= 0 && time <= 1))
+    throw InvalidArgumentError("time must be between 0 and 1 (the whole sequence), got " + format_double(time));
+  const std::vector<double>& knots = st.guide->knot_times();
+  std::size_t s = 0;
+  while (s + 1 < st.segments.size() && time > knots[s + 1]) ++s;
+  const double u = time >= knots[s + 1] ? 1.0 : (time - knots[s]) / (knots[s + 1] - knots[s]);
+  return segment_frame(s, std::clamp(u, 0.0, 1.0), -1);
+}
+
+KeyPoseMorphResult morph_key_poses(const std::vector<StickFigure>& keys, const KeyPoseMorphOptions& options) {
+  KeyPoseMorphSolver solver(keys, options);
+  const int frames = solver.frame_count();
+  KeyPoseMorphResult result;
+  result.key_frames = solver.key_frames();
+  result.times.resize(std::size_t(frames));
+  for (int f = 0; f < frames; ++f) result.times[std::size_t(f)] = double(f) / double(frames - 1);
+  result.frames.reserve(std::size_t(frames));
+  for (int f = 0; f < frames; ++f) result.frames.push_back(solver.frame(f));
   // Every key exactly at its frame: the segments' end frames are their
   // pairs' figures (GuidedMorph), so this holds by construction; a
   // mismatch is a bug, not a user's error.
-  for (std::size_t k = 0; k < count; ++k)
-    if (result.frames[std::size_t(key_frames[k])] != keys[k].vertices)
-      throw InternalError("morph_key_poses: frame " + std::to_string(key_frames[k]) + " is not " + key_name(k));
-  if (options.loop && result.frames.back() != keys[0].vertices)
+  const std::vector<StickFigure>& common = solver.keys();
+  for (std::size_t k = 0; k < common.size(); ++k)
+    if (result.frames[std::size_t(result.key_frames[k])] != common[k].vertices)
+      throw InternalError("morph_key_poses: frame " + std::to_string(result.key_frames[k]) + " is not " +
+                          key_name(k));
+  if (options.loop && result.frames.back() != common[0].vertices)
     throw InternalError("morph_key_poses: the loop's last frame is not key 1");
-  return result;
-}
-
-}  // namespace
-
-KeyPoseMorphResult morph_key_poses(const std::vector<StickFigure>& keys, const KeyPoseMorphOptions& options) {
-  if (keys.size() < 2)
-    throw InvalidArgumentError("a key-pose sequence needs at least two keys, got " + std::to_string(keys.size()));
-  check_key_pose_options(options, keys.size());
-  if (options.correspond == CorrespondenceMode::ByIndex) return morph_common_keys(keys, options);
-  KeyPoseCorrespondenceOptions matching;
-  matching.pins = options.pins;
-  KeyPoseCorrespondence correspondence = correspond_key_poses(keys, matching);
-  KeyPoseMorphResult result = morph_common_keys(correspondence.keys, options);
-  result.correspondence = std::move(correspondence);
+  result.segments = solver.segments();
+  result.correspondence = solver.correspondence();
   return result;
 }
 

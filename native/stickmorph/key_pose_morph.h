@@ -24,6 +24,7 @@
 // drawing of the same stick figure.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -88,6 +89,44 @@ struct KeyPoseMorphResult {
   /// With CorrespondenceMode::Auto: the common figure on every key (its
   /// edges are the frames' edges) and where its vertices are on each key.
   std::optional<KeyPoseCorrespondence> correspondence;
+};
+
+/// The morph through key poses as a stateful solver (geometry-central's
+/// one-shot function plus solver): the keys matched and checked, the guide
+/// and every segment's GuidedMorph set up once; then any frame of the
+/// sequence, or the figure at any time, each verified as morph_key_poses'
+/// frames are. For scrubbing: frames may be asked in any order.
+class KeyPoseMorphSolver {
+ public:
+  /// @throws as morph_key_poses, for everything but the frames themselves.
+  KeyPoseMorphSolver(const std::vector<StickFigure>& keys, const KeyPoseMorphOptions& options = {});
+  ~KeyPoseMorphSolver();
+  KeyPoseMorphSolver(KeyPoseMorphSolver&&) noexcept;
+  KeyPoseMorphSolver& operator=(KeyPoseMorphSolver&&) noexcept;
+
+  int frame_count() const;                       ///< N
+  const std::vector<int>& key_frames() const;    ///< F_k per key
+  /// The keys on the frames' vertices and edges: the input keys by index,
+  /// the matched keys (correspondence()->keys) with CorrespondenceMode::Auto.
+  const std::vector<StickFigure>& keys() const;
+  const std::optional<KeyPoseCorrespondence>& correspondence() const;
+  /// The segments, their triangulations and what their frames so far cost.
+  const std::vector<KeyPoseSegment>& segments() const;
+
+  /// Frame f of N: morph_key_poses' frames[f], bit for bit.
+  /// @throws InvalidArgumentError for f outside [0, N - 1];
+  ///         VerificationError as morph_key_poses.
+  std::vector<Vec2> frame(int f);
+  /// The figure at `time` in [0, 1] of the whole sequence (key k at
+  /// F_k / (N - 1), exactly), verified; between frames too.
+  /// @throws InvalidArgumentError for a time outside [0, 1] or not a number;
+  ///         VerificationError as morph_key_poses.
+  std::vector<Vec2> solve(double time);
+
+ private:
+  std::vector<Vec2> segment_frame(std::size_t segment, double u, int label);
+  struct State;
+  std::unique_ptr<State> state_;
 };
 
 /// The morph through `keys` (K >= 2 stick figures made by

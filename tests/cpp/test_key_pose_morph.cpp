@@ -158,3 +158,26 @@ TEST_CASE("morph_key_poses refuses bad sequences, naming the key", "[key_pose_mo
   turns.turns = {1};
   CHECK_THROWS_WITH(morph_key_poses(keys, turns), Contains("2 segments, 1 entries"));
 }
+
+TEST_CASE("KeyPoseMorphSolver: any frame in any order is morph_key_poses' frame, any time a valid figure",
+          "[key_pose_morph]") {
+  const std::vector<StickFigure> keys = walk_keys(3);
+  KeyPoseMorphOptions options;
+  options.frames = 31;
+  options.loop = true;
+  const KeyPoseMorphResult result = morph_key_poses(keys, options);
+  KeyPoseMorphSolver solver(keys, options);
+  REQUIRE(solver.frame_count() == 31);
+  REQUIRE(solver.key_frames() == result.key_frames);
+  // Scrubbing backwards and jumping about: the same frames, bit for bit.
+  for (int f : {30, 17, 3, 29, 0, 10, 11, 20, 9})
+    REQUIRE(solver.frame(f) == result.frames[std::size_t(f)]);
+  // At the keys' times the keys exactly, between frames valid figures.
+  for (std::size_t k = 0; k < keys.size(); ++k)
+    REQUIRE(solver.solve(double(result.key_frames[k]) / 30.0) == keys[k].vertices);
+  REQUIRE(solver.solve(1.0) == keys[0].vertices);
+  for (double time : {0.0123, 0.5001, 0.777, 0.999})
+    REQUIRE(is_frame_valid(keys[0], solver.solve(time)));
+  CHECK_THROWS_WITH(solver.solve(1.5), Contains("time must be between 0 and 1"));
+  CHECK_THROWS_WITH(solver.frame(31), Contains("frame must be between 0 and 30"));
+}
