@@ -56,11 +56,12 @@ int nesting_depth(const py::handle& object) {
 
 // Where each vertex of the frames is on each key: matched, what the
 // matching said; by index, every key's own vertex i.
-py::list places_list(const sm::KeyPoseMorphResult& result, std::size_t keys, std::size_t n) {
+py::list places_list(const std::optional<sm::KeyPoseCorrespondence>& correspondence, std::size_t keys,
+                     std::size_t n) {
   py::list list;
   for (std::size_t k = 0; k < keys; ++k) {
-    if (result.correspondence) {
-      list.append(places_dict(result.correspondence->places[k]));
+    if (correspondence) {
+      list.append(places_dict(correspondence->places[k]));
       continue;
     }
     std::vector<sm::MatchedPlace> own(n);
@@ -68,6 +69,12 @@ py::list places_list(const sm::KeyPoseMorphResult& result, std::size_t keys, std
     list.append(places_dict(own));
   }
   return list;
+}
+
+py::list correspondence_list(const sm::KeyPoseCorrespondence& correspondence) {
+  py::list pairs;
+  for (const sm::FigureCorrespondence& match : correspondence.matches) pairs.append(matching_stats_dict(match));
+  return pairs;
 }
 
 py::dict segment_dict(const sm::KeyPoseSegment& segment) {
@@ -93,6 +100,81 @@ py::dict segment_dict(const sm::KeyPoseSegment& segment) {
   return dict;
 }
 
+// The keys and options of morph_key_poses and KeyPoseMorphSolver, from
+// their keyword arguments: arguments first, figures second, as morph() does.
+struct KeyPoseInputs {
+  std::vector<sm::StickFigure> keys;
+  sm::KeyPoseMorphOptions options;
+};
+
+KeyPoseInputs key_pose_inputs(const py::object& keys_xy, const py::object& edges, const py::object& frames,
+                              const py::object& keys_at, const py::object& loop, const py::object& hold,
+                              const py::object& rotation, const py::object& turns, const py::object& steiner,
+                              const py::object& weights, const py::object& enclosure_sides, const py::object& verify,
+                              const py::object& frame_check, const py::object& correspond, const py::object& pins) {
+  const sm::MorphStickFiguresOptions shared =
+      to_morph_options(py::int_(sm::kDefaultMorphFrames), steiner, weights, enclosure_sides, py::str("rigid"),
+                       verify, py::none(), py::none(), py::none(), py::none(), py::none(), frame_check);
+  sm::KeyPoseMorphOptions options;
+  options.steiner = shared.steiner;
+  options.weights = shared.weights;
+  options.enclosure_sides = shared.enclosure_sides;
+  options.verify = shared.verify;
+  options.frame_check = shared.frame_check;
+  if (!correspond.is_none())
+    options.correspond = sm::parse_correspondence_mode(to_name(correspond, "correspond"));
+  // One #P by 2 list (keys 1 and 2) or one per pair of keys.
+  if (!pins.is_none() && nesting_depth(pins) == 3) {
+    const py::sequence lists = pins.cast<py::sequence>();
+    for (std::size_t p = 0; p < lists.size(); ++p) options.pins.push_back(to_pins(lists[p]));
+  } else if (!pins.is_none()) {
+    std::vector<sm::VertexPin> first = to_pins(pins);
+    if (!first.empty()) options.pins.push_back(std::move(first));
+  }
+  if (!frames.is_none()) options.frames = to_count(frames, "frames");
+  if (!keys_at.is_none()) {
+    if (!is_sequence(keys_at)) throw sm::InvalidArgumentError("keys_at must be a sequence of frame numbers");
+    const py::sequence items = keys_at.cast<py::sequence>();
+    for (std::size_t k = 0; k < items.size(); ++k)
+      options.keys_at.push_back(to_count(items[k], "keys_at[" + std::to_string(k) + "]"));
+  }
+  options.loop = to_flag(loop, "loop");
+  if (!hold.is_none()) {
+    if (!is_sequence(hold)) throw sm::InvalidArgumentError("hold must be a sequence of one bool per key");
+    const py::sequence items = hold.cast<py::sequence>();
+    for (std::size_t k = 0; k < items.size(); ++k)
+      options.hold.push_back(to_flag(items[k], "hold[" + std::to_string(k) + "]"));
+  }
+  options.rotation = per_segment(rotation, "rotation", [](const py::object& o, const std::string& name) {
+    return sm::parse_rotation_direction(to_name(o, name));
+  });
+  options.turns = per_segment(turns, "turns", [](const py::object& o, const std::string& name) {
+    return to_count(o, name);
+  });
+  if (!is_sequence(keys_xy)) throw sm::InvalidArgumentError("keys_xy must be a sequence of #V by 2 arrays");
+  const py::sequence key_items = keys_xy.cast<py::sequence>();
+  // One edge list for every key, or (keys drawn separately) one per key.
+  const bool edges_per_key = nesting_depth(edges) == 3;
+  if (edges_per_key && py::len(edges) != key_items.size())
+    throw sm::InvalidArgumentError("edges: one edge list for every key, or one per key (" +
+                                   std::to_string(key_items.size()) + "), got " +
+                                   std::to_string(py::len(edges)) + " lists");
+  std::vector<sm::StickFigure> keys;
+  for (std::size_t k = 0; k < key_items.size(); ++k) {
+    const std::string index = "[" + std::to_string(k) + "]";
+    // Owned: an array's item is a new view, not kept alive by the array.
+    const py::object key_edges = edges_per_key ? py::object(edges.cast<py::sequence>()[k]) : edges;
+    keys.push_back(make_named_figure(key_items[k], key_edges,
+                                     "keys_xy" + index, edges_per_key ? "edges" + index : "edges",
+                                     "key " + std::to_string(k + 1)));
+  }
+  // One rotation or turn count for every segment, as the CLI takes it.
+  const std::size_t segments = options.loop ? keys.size() : keys.size() - (keys.empty() ? 0 : 1);
+  if (options.rotation.size() == 1 && segments > 1) options.rotation.assign(segments, options.rotation[0]);
+  if (options.turns.size() == 1 && segments > 1) options.turns.assign(segments, options.turns[0]);
+  return {std::move(keys), std::move(options)};
+}
+
 }  // namespace
 
 void bind_key_poses(py::module_& m) {
@@ -103,67 +185,10 @@ void bind_key_poses(py::module_& m) {
          const py::object& steiner, const py::object& weights, const py::object& enclosure_sides,
          const py::object& verify, const py::object& frame_check, const py::object& correspond,
          const py::object& pins) {
-        // Arguments first, figures second, as morph() does.
-        const sm::MorphStickFiguresOptions shared =
-            to_morph_options(py::int_(sm::kDefaultMorphFrames), steiner, weights, enclosure_sides, py::str("rigid"),
-                             verify, py::none(), py::none(), py::none(), py::none(), py::none(), frame_check);
-        sm::KeyPoseMorphOptions options;
-        options.steiner = shared.steiner;
-        options.weights = shared.weights;
-        options.enclosure_sides = shared.enclosure_sides;
-        options.verify = shared.verify;
-        options.frame_check = shared.frame_check;
-        if (!correspond.is_none())
-          options.correspond = sm::parse_correspondence_mode(to_name(correspond, "correspond"));
-        // One #P by 2 list (keys 1 and 2) or one per pair of keys.
-        if (!pins.is_none() && nesting_depth(pins) == 3) {
-          const py::sequence lists = pins.cast<py::sequence>();
-          for (std::size_t p = 0; p < lists.size(); ++p) options.pins.push_back(to_pins(lists[p]));
-        } else if (!pins.is_none()) {
-          std::vector<sm::VertexPin> first = to_pins(pins);
-          if (!first.empty()) options.pins.push_back(std::move(first));
-        }
-        if (!frames.is_none()) options.frames = to_count(frames, "frames");
-        if (!keys_at.is_none()) {
-          if (!is_sequence(keys_at)) throw sm::InvalidArgumentError("keys_at must be a sequence of frame numbers");
-          const py::sequence items = keys_at.cast<py::sequence>();
-          for (std::size_t k = 0; k < items.size(); ++k)
-            options.keys_at.push_back(to_count(items[k], "keys_at[" + std::to_string(k) + "]"));
-        }
-        options.loop = to_flag(loop, "loop");
-        if (!hold.is_none()) {
-          if (!is_sequence(hold)) throw sm::InvalidArgumentError("hold must be a sequence of one bool per key");
-          const py::sequence items = hold.cast<py::sequence>();
-          for (std::size_t k = 0; k < items.size(); ++k)
-            options.hold.push_back(to_flag(items[k], "hold[" + std::to_string(k) + "]"));
-        }
-        options.rotation = per_segment(rotation, "rotation", [](const py::object& o, const std::string& name) {
-          return sm::parse_rotation_direction(to_name(o, name));
-        });
-        options.turns = per_segment(turns, "turns", [](const py::object& o, const std::string& name) {
-          return to_count(o, name);
-        });
-        if (!is_sequence(keys_xy)) throw sm::InvalidArgumentError("keys_xy must be a sequence of #V by 2 arrays");
-        const py::sequence key_items = keys_xy.cast<py::sequence>();
-        // One edge list for every key, or (keys drawn separately) one per key.
-        const bool edges_per_key = nesting_depth(edges) == 3;
-        if (edges_per_key && py::len(edges) != key_items.size())
-          throw sm::InvalidArgumentError("edges: one edge list for every key, or one per key (" +
-                                         std::to_string(key_items.size()) + "), got " +
-                                         std::to_string(py::len(edges)) + " lists");
-        std::vector<sm::StickFigure> keys;
-        for (std::size_t k = 0; k < key_items.size(); ++k) {
-          const std::string index = "[" + std::to_string(k) + "]";
-          // Owned: an array's item is a new view, not kept alive by the array.
-          const py::object key_edges = edges_per_key ? py::object(edges.cast<py::sequence>()[k]) : edges;
-          keys.push_back(make_named_figure(key_items[k], key_edges,
-                                           "keys_xy" + index, edges_per_key ? "edges" + index : "edges",
-                                           "key " + std::to_string(k + 1)));
-        }
-        // One rotation or turn count for every segment, as the CLI takes it.
-        const std::size_t segments = options.loop ? keys.size() : keys.size() - (keys.empty() ? 0 : 1);
-        if (options.rotation.size() == 1 && segments > 1) options.rotation.assign(segments, options.rotation[0]);
-        if (options.turns.size() == 1 && segments > 1) options.turns.assign(segments, options.turns[0]);
+        KeyPoseInputs inputs = key_pose_inputs(keys_xy, edges, frames, keys_at, loop, hold, rotation, turns, steiner,
+                                               weights, enclosure_sides, verify, frame_check, correspond, pins);
+        const std::vector<sm::StickFigure>& keys = inputs.keys;
+        const sm::KeyPoseMorphOptions& options = inputs.options;
         sm::KeyPoseMorphResult result;
         {
           py::gil_scoped_release release;
@@ -177,13 +202,8 @@ void bind_key_poses(py::module_& m) {
         dict["times"] = py::array_t<double>(py::ssize_t(result.times.size()), result.times.data());
         dict["edges"] = to_edge_array(figure.edges);
         dict["keys_at"] = to_list(result.key_frames);
-        dict["places"] = places_list(result, keys.size(), n);
-        if (result.correspondence) {
-          py::list pairs;
-          for (const sm::FigureCorrespondence& match : result.correspondence->matches)
-            pairs.append(matching_stats_dict(match));
-          dict["correspondence"] = pairs;
-        }
+        dict["places"] = places_list(result.correspondence, keys.size(), n);
+        if (result.correspondence) dict["correspondence"] = correspondence_list(*result.correspondence);
         py::list segment_list;
         for (const sm::KeyPoseSegment& segment : result.segments) segment_list.append(segment_dict(segment));
         dict["segments"] = segment_list;
@@ -240,6 +260,72 @@ Raises:
     cannot be matched ("key 2 and key 3: ...").
   NumericRangeError, VerificationError: as morph().
 )doc");
+
+  // The stateful form, for scrubbing: set up once, then any frame or time.
+  py::class_<sm::KeyPoseMorphSolver>(m, "KeyPoseMorphSolver", R"doc(The morph through key poses set up once
+(keys matched and checked, the guide and every segment's triangulation and factorizations), then
+any frame of the sequence or the figure at any time, each verified: for scrubbing a timeline.
+Takes morph_key_poses()'s arguments; solver.frame(f) is morph_key_poses(...)["frames"][f]
+bit for bit, in any order.)doc")
+      .def(py::init([](const py::object& keys_xy, const py::object& edges, const py::object& frames,
+                       const py::object& keys_at, const py::object& loop, const py::object& hold,
+                       const py::object& rotation, const py::object& turns, const py::object& steiner,
+                       const py::object& weights, const py::object& enclosure_sides, const py::object& verify,
+                       const py::object& frame_check, const py::object& correspond, const py::object& pins) {
+             KeyPoseInputs inputs = key_pose_inputs(keys_xy, edges, frames, keys_at, loop, hold, rotation, turns,
+                                                    steiner, weights, enclosure_sides, verify, frame_check,
+                                                    correspond, pins);
+             py::gil_scoped_release release;
+             return std::make_unique<sm::KeyPoseMorphSolver>(inputs.keys, inputs.options);
+           }),
+           py::arg("keys_xy"), py::arg("edges"), py::arg("frames") = py::none(), py::arg("keys_at") = py::none(),
+           py::arg("loop") = false, py::arg("hold") = py::none(), py::arg("rotation") = py::none(),
+           py::arg("turns") = py::none(), py::arg("steiner") = py::none(), py::arg("weights") = py::none(),
+           py::arg("enclosure_sides") = py::none(), py::arg("verify") = py::none(),
+           py::arg("frame_check") = py::none(), py::arg("correspond") = py::none(), py::arg("pins") = py::none())
+      .def(
+          "solve",
+          [](sm::KeyPoseMorphSolver& solver, const py::object& time) {
+            const double t = to_time(time);
+            std::vector<sm::Vec2> positions;
+            {
+              py::gil_scoped_release release;
+              positions = solver.solve(t);
+            }
+            return to_point_array(positions);
+          },
+          py::arg("t"),
+          "The figure (#V by 2) at time t in [0, 1] of the whole sequence (key k at keys_at[k] / (frame_count - 1)).")
+      .def(
+          "frame",
+          [](sm::KeyPoseMorphSolver& solver, const py::object& f) {
+            const long long index = to_count(f, "f");
+            if (index > sm::kMaxMorphFrames)
+              throw sm::InvalidArgumentError("frame must be between 0 and " +
+                                             std::to_string(solver.frame_count() - 1) + ", got " +
+                                             std::to_string(index));
+            std::vector<sm::Vec2> positions;
+            {
+              py::gil_scoped_release release;
+              positions = solver.frame(int(index));
+            }
+            return to_point_array(positions);
+          },
+          py::arg("f"), "Frame f (#V by 2) of the sequence's frame_count frames.")
+      .def_property_readonly("frame_count", &sm::KeyPoseMorphSolver::frame_count)
+      .def_property_readonly("keys_at", [](const sm::KeyPoseMorphSolver& solver) { return to_list(solver.key_frames()); })
+      .def_property_readonly("edges",
+                             [](const sm::KeyPoseMorphSolver& solver) { return to_edge_array(solver.keys()[0].edges); })
+      .def_property_readonly("places",
+                             [](const sm::KeyPoseMorphSolver& solver) {
+                               return places_list(solver.correspondence(), solver.keys().size(),
+                                                  solver.keys()[0].vertices.size());
+                             })
+      .def_property_readonly("segments", [](const sm::KeyPoseMorphSolver& solver) {
+        py::list list;
+        for (const sm::KeyPoseSegment& segment : solver.segments()) list.append(segment_dict(segment));
+        return list;
+      });
 }
 
 }  // namespace stickmorph::python

@@ -196,6 +196,30 @@ int dummies(const std::vector<sm::MatchedPlace>& places) {
 
 }  // namespace
 
+// A time argument: any real number (int, float, NumPy scalar); booleans are
+// refused like frames=True, a time of True is a mistake. The range check is
+// here, not only in the engine, so that the message quotes the value.
+double to_time(const py::object& object) {
+  if (PyBool_Check(object.ptr()) || !(PyFloat_Check(object.ptr()) || PyIndex_Check(object.ptr()) ||
+                                      py::hasattr(object, "__float__")) ||
+      py::isinstance<py::str>(object))
+    throw sm::InvalidArgumentError("t must be a number in [0, 1], got " +
+                                   py::str(py::type::of(object).attr("__name__")).cast<std::string>());
+  double t = 0;
+  try {
+    t = py::float_(object).cast<double>();
+  } catch (py::error_already_set&) {
+    // An array of several values has __float__ but refuses it (TypeError).
+    throw sm::InvalidArgumentError("t must be one number in [0, 1], got " +
+                                   py::str(py::type::of(object).attr("__name__")).cast<std::string>() +
+                                   (py::hasattr(object, "shape") ? " of shape " + py::str(object.attr("shape")).cast<std::string>()
+                                                                  : std::string()));
+  }
+  if (!(t >= 0 && t <= 1))
+    throw sm::InvalidArgumentError("t must be in [0, 1], got " + py::repr(py::float_(t)).cast<std::string>());
+  return t;
+}
+
 py::dict places_dict(const std::vector<sm::MatchedPlace>& places) {
   py::dict dict;
   dict["vertex"] = place_array(places, &sm::MatchedPlace::vertex);

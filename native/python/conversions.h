@@ -53,6 +53,10 @@ std::vector<std::array<std::int64_t, 2>> to_edges(py::handle object, const std::
 /// #P by 2 vertex pairs (source, target) for correspond=; None gives none.
 std::vector<sm::VertexPin> to_pins(const py::object& object);
 
+/// A solver's time argument t in [0, 1]: any real number (int, float, NumPy
+/// scalar); booleans, strings and arrays of several values are refused.
+double to_time(const py::object& object);
+
 /// Where each matched vertex is on one drawing: "vertex", "edge" and
 /// "fraction", #m arrays each (MatchedPlace).
 py::dict places_dict(const std::vector<sm::MatchedPlace>& places);

@@ -132,3 +132,29 @@ def test_pins_for_drawn_keys(drawn):
     for a, b in zip(free["places"], pinned["places"]):
         assert np.array_equal(a["vertex"], b["vertex"]) and np.array_equal(a["edge"], b["edge"])
     assert np.allclose(pinned["frames"], free["frames"], rtol=0, atol=1e-12)
+
+
+def test_the_solver_scrubs_any_frame_in_any_order_and_any_time(sequence, drawn):
+    _, keys, edges = sequence
+    whole = stickmorph.morph_key_poses(keys, edges, frames=41, loop=True)
+    solver = stickmorph.KeyPoseMorphSolver(keys, edges, frames=41, loop=True)
+    assert solver.frame_count == 41 and solver.keys_at == whole["keys_at"]
+    assert len(solver.segments) == 3 and np.array_equal(solver.edges, whole["edges"])
+    for f in (40, 7, 33, 0, 14, 13, 27):
+        assert np.array_equal(solver.frame(f), whole["frames"][f])
+    for k, f in enumerate(solver.keys_at):
+        assert np.array_equal(solver.solve(f / 40), np.asarray(keys[k], dtype=float))
+    # Between frames: valid figures, by the independent exact checker.
+    checker = sm.topo.Topology(np.asarray(keys[0], dtype=float), [tuple(e) for e in edges])
+    for t in (0.0101, 0.5, 0.9876):
+        assert not checker.frame_problems(solver.solve(t), limit=1), t
+    with pytest.raises(stickmorph.InvalidArgumentError, match=r"t must be in \[0, 1\]"):
+        solver.solve(1.5)
+    with pytest.raises(stickmorph.InvalidArgumentError, match="frame must be between 0 and 40"):
+        solver.frame(41)
+    # Keys drawn separately: the same places as the function gives.
+    drawn_keys, drawn_edges = drawn
+    matched = stickmorph.KeyPoseMorphSolver(drawn_keys, drawn_edges, correspond="auto", frames=21)
+    function = stickmorph.morph_key_poses(drawn_keys, drawn_edges, correspond="auto", frames=21)
+    assert all(np.array_equal(a["vertex"], b["vertex"]) for a, b in zip(matched.places, function["places"]))
+    assert np.array_equal(matched.frame(12), function["frames"][12])
