@@ -272,13 +272,15 @@ def test_bake_key_poses_refusals_name_the_key(scene, addon):
     assert "Rigid motion only" in message, message
     message = operator_fails(bake, easing="IN_OUT")
     assert "Easing" in message, message
-    # A mirror image between keys 2 and 3: the engine's report, named.
+    # A mirror image between keys 2 and 3 by index: the engine's report,
+    # named. (Automatic would match it where the module matches key poses:
+    # the mirrored man is the man with his arms and legs swapped.)
     mirrored = [[-x, y] for x, y in POSES[2]]
     bpy.data.objects.remove(objects[2])
     objects[2] = make_mesh_object("Wave_3", mirrored, EDGES, pose_matrix(2))
     bpy.context.view_layer.update()
     select(*objects)
-    message = operator_fails(bake)
+    message = operator_fails(bake, correspondence="INDEX")
     assert "key 2 ('Wave_2') and key 3 ('Wave_3')" in message and "mirror image" in message, message
     # By index, a key with another vertex count.
     bpy.data.objects.remove(objects[2])
@@ -328,6 +330,25 @@ def test_matched_keys_when_the_module_matches(scene, addon):
         d = got - plane.origin
         xy = np.stack([d @ plane.u, d @ plane.v], axis=1)
         assert np.abs(xy - engine_result["frames"][f]).max() <= 1e-6 * size, f
+
+
+def test_automatic_matches_keys_incompatible_by_index(scene, addon):
+    seq = sequence_module()
+    if not seq.supports_matching():
+        pytest.skip("this stickmorph module's morph_key_poses has no correspond= (keys drawn separately)")
+    objects = make_keys()
+    # Key 3 mirrored: by index a mirror image, matched the man with his arms and legs swapped.
+    bpy.data.objects.remove(objects[2])
+    objects[2] = make_mesh_object("Wave_3", [[-x, y] for x, y in POSES[2]], EDGES, pose_matrix(2))
+    bpy.context.view_layer.update()
+    select(*objects)
+    assert bpy.ops.object.stick_morph_bake_sequence(frame_step=6, frame_start=1) == {"FINISHED"}
+    assert bpy.context.scene.stick_morph.last_correspondence == "Matched"
+    result = bpy.context.view_layer.objects.active
+    size = figure_size([world_coords(o) for o in objects])
+    for k, obj in enumerate(objects):  # every key shown at its frame (as a set of points)
+        got = evaluated_world(result, 1 + 6 * k)
+        assert np.abs(np.sort(got, axis=0) - np.sort(world_coords(obj), axis=0)).max() <= 1e-6 * size, k
 
 
 def test_keys_that_need_matching_without_the_module_matching(scene, addon):
