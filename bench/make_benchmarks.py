@@ -32,7 +32,7 @@ from benchmarks_md.common import (STAGES, Cell, InputError, fit_exponent, index_
 from benchmarks_md.correspondence import (correspondence_requirement, correspondence_section,  # noqa: E402,F401
                                           read_correspondence)
 from benchmarks_md.motion import motion_section, read_motion  # noqa: E402,F401
-from benchmarks_md.sequences import read_sequences, sequences_section  # noqa: E402,F401
+from benchmarks_md.sequences import read_sequences, sequences_headline, sequences_section  # noqa: E402,F401
 from benchmarks_md.speed import frame_cost_section, scrub_section, speed_headline, total_exponent  # noqa: E402,F401
 from benchmarks_md.writer import write_report  # noqa: E402
 

@@ -7,7 +7,7 @@ from .common import (COLORS, DASHES, FIT_MIN_N, METHODS, fmt_int, fmt_ms, fmt_ra
                      loglog_svg, table)
 from .correspondence import correspondence_section
 from .motion import motion_section, motion_targets_met
-from .sequences import sequences_section
+from .sequences import sequences_headline, sequences_section
 from .speed import frame_cost_section, scrub_section, speed_headline
 from .stages import stages_section
 from .steiner import polygon_pairs_section, steiner_section
@@ -21,7 +21,7 @@ def write_report(records, polygon_pairs, run, out_path, plot_dir, motion=None, c
     md = []
 
     md += header_section(run)
-    md += headline_section(cells, families, sizes, run, motion, scrub)
+    md += headline_section(cells, families, sizes, run, motion, scrub, sequences)
     md += corpus_section(cells, families, sizes)
     md += steiner_section(cells, families, sizes, run, plot_dir, plot_rel)
     md += stages_section(cells, families, sizes, run, plot_dir, plot_rel)
@@ -69,7 +69,7 @@ def header_section(run):
     return md
 
 
-def headline_section(cells, families, sizes, run, motion, scrub):
+def headline_section(cells, families, sizes, run, motion, scrub, sequences=None):
     """The headline: one line per claim."""
     md = []
     add = md.append
@@ -118,6 +118,8 @@ def headline_section(cells, families, sizes, run, motion, scrub):
         met = motion_targets_met(motion)
         headline.append("Motion quality ([below](#motion-quality)), issue 12's targets met: "
                         + ", ".join(f"{m} {met[m]}" for m in motion["methods"]) + ".")
+    if sequences is not None:
+        headline.append(sequences_headline(sequences))
     add("\n".join(f"- {h}" for h in headline) + "\n")
     return md
 

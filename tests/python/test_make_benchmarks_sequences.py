@@ -53,3 +53,9 @@ def test_without_sequences_json_the_section_is_a_note(tmp_path):
         mb.read_sequences(str(tmp_path))
     (tmp_path / "sequences.json").write_text(json.dumps(rows()))
     assert len(mb.read_sequences(str(tmp_path))) == 8
+
+
+def test_the_headline_line_gives_the_jumps_of_the_three_motions():
+    line = mb.sequences_headline(rows())
+    assert "median 0.030" in line and "chained pair morphs 1.100" in line and "straight lines 1.200" in line
+    assert "0 invalid frames of 18" in line
