@@ -10,7 +10,10 @@
 # bakes the monkey -> basketball player sample (Figure 8a) with it in headless
 # Blender (scripts/render_demo.py: a temporary user config, never the real
 # one) and renders PNG frames and an MP4 into out/monkey_to_player/, next to a
-# filmstrip of our morph against the straight-line morph (Figure 8d).
+# filmstrip of our morph against the straight-line morph (Figure 8d). Last,
+# it bakes the waving stick man of blend_samples/key_poses through its four
+# key poses (object.stick_morph_bake_sequence, issue 28) and renders it into
+# out/stick_man_wave/.
 #
 #   scripts/demo.sh                   Blender 3.4.1 of the host (Debian 12)
 #   scripts/demo.sh --blender trixie  Blender 4.3.2 in the Debian 13 chroot
@@ -124,5 +127,15 @@ print(f"  {out}/baked.blend: {os.path.getsize(out + '/baked.blend') / 1024:.0f} 
 print(f"  {out}/filmstrip.svg: {os.path.getsize(out + '/filmstrip.svg') / 1024:.0f} KiB "
       "(top: our morph, bottom: the straight-line morph)")
 PY
+
+section "Blender ($blender_system): key poses, a stick man waving through four poses (issue 28)"
+keys_out=out/stick_man_wave
+mkdir -p $keys_out
+started=$SECONDS
+echo "\$ blender -b --factory-startup --python-exit-code 1 --python scripts/render_demo.py -- --sample blend_samples/key_poses/stick_man_wave.blend --key-poses wave_keys --zip $zip --out $keys_out --resolution 960 540"
+"${in_blender_system[@]}" blender -b --factory-startup --python-exit-code 1 --python scripts/render_demo.py -- \
+  --sample blend_samples/key_poses/stick_man_wave.blend --key-poses wave_keys --zip "$zip" --out $keys_out \
+  --resolution 960 540 | grep --line-buffered -v -E '^[[:space:]]*(Fra:|Saved: |Append frame|Time: |$)'
+echo "bake and render: $((SECONDS - started)) s"
 
 section "Demo finished"

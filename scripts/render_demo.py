@@ -3,6 +3,8 @@
     blender -b --factory-startup --python-exit-code 1 --python scripts/render_demo.py -- \\
         --sample blend_samples/monkey_to_player.blend --zip dist/stick_morph-<version>.zip \\
         --out out/monkey_to_player [--frames 60] [--resolution 960 540]
+    blender ... --python scripts/render_demo.py -- --sample blend_samples/key_poses/stick_man_wave.blend \
+        --key-poses wave_keys --zip dist/stick_morph-<version>.zip --out out/stick_man_wave
 
 Steps:
 1. Re-launches Blender with BLENDER_USER_SCRIPTS, BLENDER_USER_CONFIG and
@@ -11,7 +13,9 @@ Steps:
    removed afterwards.
 2. Installs and enables the add-on from the zip there.
 3. Opens the sample and bakes `<name>_source` -> `<name>_target` with
-   object.stick_morph_bake (renderable Geometry Nodes tubes), frames 1..N.
+   object.stick_morph_bake (renderable Geometry Nodes tubes), frames 1..N;
+   with --key-poses COLLECTION, the collection's meshes as key poses with
+   object.stick_morph_bake_sequence, each key at its own key frame (issue 28).
 4. Sets up Workbench for a clear picture: flat dark tubes on a light
    background, the source and target meshes hidden from render (only the morph
    shows), Standard view transform so the colours come out as set.
@@ -47,6 +51,9 @@ def parse_args(argv):
     parser.add_argument("--zip", required=True, help="the add-on zip, dist/stick_morph-<version>.zip")
     parser.add_argument("--out", required=True, help="output folder")
     parser.add_argument("--frames", type=int, default=60, help="frames of the morph (default 60)")
+    parser.add_argument("--key-poses", metavar="COLLECTION",
+                        help="bake the collection's meshes as key poses (at their own key frames; --frames "
+                             "is then not used) instead of NAME_source -> NAME_target")
     parser.add_argument("--resolution", type=int, nargs=2, default=(960, 540), metavar=("W", "H"),
                         help="render size in pixels (default 960 540)")
     parser.add_argument("--tube-radius", type=float, default=0.006,
@@ -114,10 +121,36 @@ def bake(source, target, frames, tube_radius):
     return obj
 
 
-def set_up_render(scene, source, target, resolution):
+def bake_key_poses(collection_name, tube_radius):
+    """The collection's meshes as key poses (object.stick_morph_bake_sequence), each at its own
+    key frame; the scene's frame range becomes the sequence's."""
+    import bpy
+    collection = bpy.data.collections.get(collection_name)
+    if collection is None:
+        fail(f"the sample has no collection '{collection_name}'")
+    keys = [obj for obj in collection.objects if obj.type == "MESH"]
+    for obj in bpy.context.view_layer.objects:
+        obj.select_set(False)
+    bpy.context.view_layer.objects.active = None
+    started = time.perf_counter()
+    result = bpy.ops.object.stick_morph_bake_sequence(collection=collection_name, renderable=True,
+                                                      tube_radius=tube_radius, set_frame_range=True)
+    if result != {"FINISHED"}:
+        fail(f"baking the key poses of '{collection_name}' failed ({result}); see the report above")
+    obj = bpy.context.view_layer.objects.active
+    if obj is None or obj.get("stick_morph_role") is None:
+        fail("the key-pose bake did not leave its result active")
+    scene = bpy.context.scene
+    print(f"baked {len(keys)} key poses of '{collection_name}' into '{obj.name}': {len(obj.data.vertices)} "
+          f"vertices, frames {scene.frame_start}..{scene.frame_end}, {time.perf_counter() - started:.2f} s",
+          flush=True)
+    return obj, keys
+
+
+def set_up_render(scene, hidden, resolution):
     """Workbench: flat dark tubes on a light background; only the morph renders."""
-    source.hide_render = True
-    target.hide_render = True
+    for obj in hidden:
+        obj.hide_render = True
     render = scene.render
     render.engine = "BLENDER_WORKBENCH"
     render.resolution_x, render.resolution_y = resolution
@@ -140,6 +173,32 @@ def set_up_render(scene, source, target, resolution):
         import bpy
         scene.world = bpy.data.worlds.new("World")
     scene.world.color = BACKGROUND
+
+
+def fit_camera(scene, result, margin=0.1):
+    """Points the sample's orthographic camera (looking down -Z, as the samples set it) at the
+    whole morph: centred on the box every frame of the result lies in, the scale fitting it with
+    `margin` to spare on each side at the render's aspect."""
+    import bpy
+    from mathutils import Vector
+    camera = scene.camera
+    if camera is None or camera.data.type != "ORTHO":
+        fail("the sample has no orthographic camera to fit to the key poses")
+    low, high = [float("inf")] * 2, [float("-inf")] * 2
+    for frame in range(scene.frame_start, scene.frame_end + 1):
+        scene.frame_set(frame)
+        evaluated = result.evaluated_get(bpy.context.evaluated_depsgraph_get())
+        for corner in evaluated.bound_box:
+            world = evaluated.matrix_world @ Vector(corner)
+            low = [min(low[i], world[i]) for i in range(2)]
+            high = [max(high[i], world[i]) for i in range(2)]
+    scene.frame_set(scene.frame_start)
+    aspect = scene.render.resolution_x / scene.render.resolution_y
+    width, height = high[0] - low[0], high[1] - low[1]
+    camera.location.x, camera.location.y = (low[0] + high[0]) / 2, (low[1] + high[1]) / 2
+    camera.rotation_euler = (0.0, 0.0, 0.0)
+    # ortho_scale spans the larger side of the render.
+    camera.data.ortho_scale = (1 + 2 * margin) * max(width, height * aspect) / (1 if aspect >= 1 else aspect)
 
 
 def check_framing(scene, result):
@@ -238,9 +297,18 @@ def main():
 
     bpy.ops.wm.open_mainfile(filepath=args.sample, load_ui=False)
     scene = bpy.context.scene
-    name, source, target = find_pair(args.sample)
-    result = bake(source, target, args.frames, args.tube_radius)
-    set_up_render(scene, source, target, args.resolution)
+    if args.key_poses:
+        name = args.key_poses
+        result, hidden = bake_key_poses(args.key_poses, args.tube_radius)
+    else:
+        name, source, target = find_pair(args.sample)
+        result = bake(source, target, args.frames, args.tube_radius)
+        hidden = [source, target]
+    set_up_render(scene, hidden, args.resolution)
+    if args.key_poses:
+        # The keys stand side by side in the sample; the morph walks from the
+        # first to the last: the camera is fitted to its whole way.
+        fit_camera(scene, result)
     check_framing(scene, result)
 
     os.makedirs(args.out, exist_ok=True)
@@ -255,7 +323,7 @@ def main():
     render_movie(scene, mp4)
 
     size = lambda path: f"{os.path.getsize(path) / 1024:.0f} KiB"
-    print(f"\nrender_demo.py: {name}, {args.frames} frames at {args.resolution[0]}x{args.resolution[1]}, "
+    print(f"\nrender_demo.py: {name}, {len(frames)} frames at {args.resolution[0]}x{args.resolution[1]}, "
           f"{time.perf_counter() - started:.1f} s. Written:", flush=True)
     print(f"  {baked} ({size(baked)})")
     print(f"  {os.path.dirname(frames[0])}/frame_####.png: {len(frames)} PNG frames "

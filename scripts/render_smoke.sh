@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The demo's bake and render, small: builds the package for the Blender on
 # PATH, bakes monkey -> basketball player with scripts/render_demo.py (12
-# frames at 320x180) and checks that the PNG frames and the MP4 were written.
+# frames at 320x180) and the waving stick man through its four key poses
+# (issue 28: object.stick_morph_bake_sequence, 97 frames at 320x180), and
+# checks that the PNG frames and the MP4s were written.
 # scripts/blender_matrix.sh runs it in every tested Blender, so the README
 # demo's render is known to work in 3.4, 4.3 and 5.2 alike.
 set -euo pipefail
@@ -33,3 +35,17 @@ mp4="$out/render/morph.mp4"
 # An MP4 file starts with an ftyp box: bytes 4..7 spell "ftyp".
 [[ "$(head -c 8 "$mp4" | tail -c 4)" == "ftyp" ]] || { echo "render_smoke.sh: morph.mp4 is not an MP4 file" >&2; exit 1; }
 echo "render smoke: $package baked and rendered $pngs frames and a $(stat -c %s "$mp4")-byte MP4 in $(blender --version 2>/dev/null | head -n 1)"
+
+# The key-pose sample: the collection's four keys at their own key frames
+# 1, 25, 49 and 73, so the sequence is frames 1..73.
+if ! blender -b --factory-startup --python-exit-code 1 --python scripts/render_demo.py -- \
+    --sample blend_samples/key_poses/stick_man_wave.blend --key-poses wave_keys --zip "$package" \
+    --out "$out/key_poses" --resolution 320 180 > "$out/key_poses.log" 2>&1; then
+  tail -n 40 "$out/key_poses.log" >&2
+  echo "render_smoke.sh: the key-pose bake and render failed" >&2
+  exit 1
+fi
+key_pngs=$(find "$out/key_poses/frames" -name 'frame_*.png' | wc -l)
+[[ "$key_pngs" -eq 73 ]] || { echo "render_smoke.sh: $key_pngs PNG frames of the key poses, expected 73" >&2; exit 1; }
+[[ "$(head -c 8 "$out/key_poses/morph.mp4" | tail -c 4)" == "ftyp" ]] || { echo "render_smoke.sh: the key poses' morph.mp4 is not an MP4 file" >&2; exit 1; }
+echo "render smoke: key poses of wave_keys baked and rendered $key_pngs frames and an MP4"
