@@ -351,6 +351,31 @@ def test_automatic_matches_keys_incompatible_by_index(scene, addon):
         assert np.abs(np.sort(got, axis=0) - np.sort(world_coords(obj), axis=0)).max() <= 1e-6 * size, k
 
 
+def pin(obj, name, vertex):
+    obj.vertex_groups.new(name=name).add([vertex], 1.0, "REPLACE")
+
+
+def test_pins_of_neighbouring_keys(scene, addon):
+    seq = sequence_module()
+    if not seq.supports_matching():
+        pytest.skip("this stickmorph module's morph_key_poses has no correspond= (keys drawn separately)")
+    objects, _ = drawn_separately()
+    for obj in objects:  # the left hand, vertex 4 in every key
+        pin(obj, "pin.hand", 4)
+    assert bpy.ops.object.stick_morph_bake_sequence(frame_step=6, frame_start=1) == {"FINISHED"}
+    result = bpy.context.view_layer.objects.active
+    size = figure_size([world_coords(o) for o in objects])
+    for k, obj in enumerate(objects):
+        assert np.abs(evaluated_world(result, 1 + 6 * k)[4] - world_coords(obj)[4]).max() <= 1e-6 * size, k
+    # A pin group missing in a neighbour is named.
+    objects[3].vertex_groups.remove(objects[3].vertex_groups["pin.hand"])
+    select(*objects)
+    message = operator_fails(bpy.ops.object.stick_morph_bake_sequence)
+    assert "'pin.hand' is in 'Wave_3' but not in 'Wave_4'" in message, message
+    message = operator_fails(bpy.ops.object.stick_morph_bake_sequence, correspondence="INDEX")
+    assert "pins need Correspondence (Match) Automatic or By Shape" in message, message
+
+
 def test_keys_that_need_matching_without_the_module_matching(scene, addon):
     seq = sequence_module()
     if seq.supports_matching():
