@@ -24,7 +24,6 @@ struct Unsupported {
   const char* why;
 };
 constexpr Unsupported kUnsupported[] = {
-    {"--easing", "the sequence's timing is one smooth spline through the keys; --hold K stops at key K"},
     {"--svg", "the filmstrip of a sequence is not built yet"},
     {"--svg-triangulation", "the filmstrip of a sequence is not built yet"},
     {"--svg-compare-linear", "the filmstrip of a sequence is not built yet"},
@@ -91,6 +90,13 @@ int run_key_poses(const ParsedArguments& arguments) {
       throw InvalidArgumentError("morph: --rotation takes one direction for every segment or one per segment (" +
                                  std::to_string(segments) + "), got " + std::to_string(names.size()));
     for (std::size_t s = 0; s < segments; ++s) options.rotation.push_back(parse_rotation_direction(names[names.size() == 1 ? 0 : s]));
+  }
+  if (const std::string* text = option_value(arguments, "--easing")) {
+    const std::vector<std::string> names = comma_list(*text);
+    if (names.size() != 1 && names.size() != segments)
+      throw InvalidArgumentError("morph: --easing takes one easing for every segment or one per segment (" +
+                                 std::to_string(segments) + "), got " + std::to_string(names.size()));
+    for (std::size_t s = 0; s < segments; ++s) options.easing.push_back(parse_easing(names[names.size() == 1 ? 0 : s]));
   }
   if (option_value(arguments, "--turns")) {
     const std::vector<long long> turns = integer_list_option(arguments, "--turns");

@@ -111,7 +111,8 @@ KeyPoseInputs key_pose_inputs(const py::object& keys_xy, const py::object& edges
                               const py::object& keys_at, const py::object& loop, const py::object& hold,
                               const py::object& rotation, const py::object& turns, const py::object& steiner,
                               const py::object& weights, const py::object& enclosure_sides, const py::object& verify,
-                              const py::object& frame_check, const py::object& correspond, const py::object& pins) {
+                              const py::object& frame_check, const py::object& correspond, const py::object& pins,
+                              const py::object& easing) {
   const sm::MorphStickFiguresOptions shared =
       to_morph_options(py::int_(sm::kDefaultMorphFrames), steiner, weights, enclosure_sides, py::str("rigid"),
                        verify, py::none(), py::none(), py::none(), py::none(), py::none(), frame_check);
@@ -151,6 +152,9 @@ KeyPoseInputs key_pose_inputs(const py::object& keys_xy, const py::object& edges
   options.turns = per_segment(turns, "turns", [](const py::object& o, const std::string& name) {
     return to_count(o, name);
   });
+  options.easing = per_segment(easing, "easing", [](const py::object& o, const std::string& name) {
+    return sm::parse_easing(to_name(o, name));
+  });
   if (!is_sequence(keys_xy)) throw sm::InvalidArgumentError("keys_xy must be a sequence of #V by 2 arrays");
   const py::sequence key_items = keys_xy.cast<py::sequence>();
   // One edge list for every key, or (keys drawn separately) one per key.
@@ -172,6 +176,7 @@ KeyPoseInputs key_pose_inputs(const py::object& keys_xy, const py::object& edges
   const std::size_t segments = options.loop ? keys.size() : keys.size() - (keys.empty() ? 0 : 1);
   if (options.rotation.size() == 1 && segments > 1) options.rotation.assign(segments, options.rotation[0]);
   if (options.turns.size() == 1 && segments > 1) options.turns.assign(segments, options.turns[0]);
+  if (options.easing.size() == 1 && segments > 1) options.easing.assign(segments, options.easing[0]);
   return {std::move(keys), std::move(options)};
 }
 
@@ -184,9 +189,10 @@ void bind_key_poses(py::module_& m) {
          const py::object& loop, const py::object& hold, const py::object& rotation, const py::object& turns,
          const py::object& steiner, const py::object& weights, const py::object& enclosure_sides,
          const py::object& verify, const py::object& frame_check, const py::object& correspond,
-         const py::object& pins) {
+         const py::object& pins, const py::object& easing) {
         KeyPoseInputs inputs = key_pose_inputs(keys_xy, edges, frames, keys_at, loop, hold, rotation, turns, steiner,
-                                               weights, enclosure_sides, verify, frame_check, correspond, pins);
+                                               weights, enclosure_sides, verify, frame_check, correspond, pins,
+                                               easing);
         const std::vector<sm::StickFigure>& keys = inputs.keys;
         const sm::KeyPoseMorphOptions& options = inputs.options;
         sm::KeyPoseMorphResult result;
@@ -213,7 +219,7 @@ void bind_key_poses(py::module_& m) {
       py::arg("loop") = false, py::arg("hold") = py::none(), py::arg("rotation") = py::none(),
       py::arg("turns") = py::none(), py::arg("steiner") = py::none(), py::arg("weights") = py::none(),
       py::arg("enclosure_sides") = py::none(), py::arg("verify") = py::none(), py::arg("frame_check") = py::none(),
-      py::arg("correspond") = py::none(), py::arg("pins") = py::none(),
+      py::arg("correspond") = py::none(), py::arg("pins") = py::none(), py::arg("easing") = py::none(),
       R"doc(Morphs a stick figure through a sequence of key poses (issue 28): one continuous,
 valid motion that shows key k exactly at frame keys_at[k], its velocity continuous through
 every key (unless hold stops it there). The same computation as
@@ -234,6 +240,8 @@ Args:
   hold: one bool per key: stop the motion at that key.
   rotation: "short", "ccw" or "cw" for every segment, or one per segment.
   turns: extra whole turns for every segment, or one per segment.
+  easing: "none" or "in-out" for every segment, or one per segment: an eased segment starts
+    from rest and comes to rest (both its keys held).
   steiner, weights, enclosure_sides, verify, frame_check: as for morph().
   correspond: "index" (default) or "auto": keys drawn separately (other vertex counts,
     numbering, subdivision) are matched onto one common figure of m vertices, key 1's first,
@@ -271,10 +279,11 @@ bit for bit, in any order.)doc")
                        const py::object& keys_at, const py::object& loop, const py::object& hold,
                        const py::object& rotation, const py::object& turns, const py::object& steiner,
                        const py::object& weights, const py::object& enclosure_sides, const py::object& verify,
-                       const py::object& frame_check, const py::object& correspond, const py::object& pins) {
+                       const py::object& frame_check, const py::object& correspond, const py::object& pins,
+                       const py::object& easing) {
              KeyPoseInputs inputs = key_pose_inputs(keys_xy, edges, frames, keys_at, loop, hold, rotation, turns,
                                                     steiner, weights, enclosure_sides, verify, frame_check,
-                                                    correspond, pins);
+                                                    correspond, pins, easing);
              py::gil_scoped_release release;
              return std::make_unique<sm::KeyPoseMorphSolver>(inputs.keys, inputs.options);
            }),
@@ -282,7 +291,8 @@ bit for bit, in any order.)doc")
            py::arg("loop") = false, py::arg("hold") = py::none(), py::arg("rotation") = py::none(),
            py::arg("turns") = py::none(), py::arg("steiner") = py::none(), py::arg("weights") = py::none(),
            py::arg("enclosure_sides") = py::none(), py::arg("verify") = py::none(),
-           py::arg("frame_check") = py::none(), py::arg("correspond") = py::none(), py::arg("pins") = py::none())
+           py::arg("frame_check") = py::none(), py::arg("correspond") = py::none(), py::arg("pins") = py::none(),
+           py::arg("easing") = py::none())
       .def(
           "solve",
           [](sm::KeyPoseMorphSolver& solver, const py::object& time) {

@@ -123,6 +123,7 @@ void check_key_pose_options(const KeyPoseMorphOptions& options, std::size_t coun
   per_entry("turns", options.turns.size(), segments, "segment");
   per_entry("rotation", options.rotation.size(), segments, "segment");
   per_entry("hold", options.hold.size(), count, "key");
+  per_entry("easing", options.easing.size(), segments, "segment");
   for (std::size_t s = 0; s < options.turns.size(); ++s)
     if (std::llabs(options.turns[s]) > kMaxExtraTurns)
       throw InvalidArgumentError("turns: segment " + std::to_string(s + 1) + " asks for " +
@@ -211,7 +212,13 @@ KeyPoseMorphSolver::KeyPoseMorphSolver(const std::vector<StickFigure>& input_key
   for (const StickFigure& key : keys) key_vertices.push_back(key.vertices);
   KeyPoseGuideOptions guide_options;
   guide_options.loop = options.loop;
+  // Held keys: those asked for, and both keys of every eased segment.
   guide_options.hold = options.hold;
+  if (!options.easing.empty()) {
+    guide_options.hold.resize(count, false);
+    for (std::size_t s = 0; s < segments; ++s)
+      if (options.easing[s] == Easing::InOut) guide_options.hold[s] = guide_options.hold[(s + 1) % count] = true;
+  }
   guide_options.rotation = options.rotation;
   for (long long t : options.turns) guide_options.turns.push_back(int(t));
   st.guide = std::make_shared<const KeyPoseGuide>(key_vertices, keys[0].edges, key_times, guide_options);

@@ -60,6 +60,12 @@ struct KeyPoseMorphOptions {
   bool loop = false;
   /// Per key (empty: none): the motion stops at that key.
   std::vector<bool> hold;
+  /// Per segment (empty: None everywhere). InOut eases the segment in and
+  /// out: the motion starts it from rest and comes to rest at its end, so
+  /// it holds both of the segment's keys (a spline through the keys cannot
+  /// slow a segment's ends without stopping there, or the speed would jump
+  /// at the key; at a held key both neighbouring segments are at rest).
+  std::vector<Easing> easing;
   /// Per segment (empty: Short and no extra turns): which way the figure
   /// turns from a key to the next, and its extra whole turns.
   std::vector<RotationDirection> rotation;

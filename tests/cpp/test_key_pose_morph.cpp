@@ -181,3 +181,14 @@ TEST_CASE("KeyPoseMorphSolver: any frame in any order is morph_key_poses' frame,
   CHECK_THROWS_WITH(solver.solve(1.5), Contains("time must be between 0 and 1"));
   CHECK_THROWS_WITH(solver.frame(31), Contains("frame must be between 0 and 30"));
 }
+
+TEST_CASE("an eased segment starts from rest and comes to rest: its keys held", "[key_pose_morph]") {
+  const std::vector<StickFigure> keys = walk_keys(4);
+  KeyPoseMorphOptions eased;
+  eased.easing = {Easing::None, Easing::InOut, Easing::None};
+  KeyPoseMorphOptions held;
+  held.hold = {false, true, true, false};
+  REQUIRE(morph_key_poses(keys, eased).frames == morph_key_poses(keys, held).frames);
+  eased.easing = {Easing::InOut};
+  CHECK_THROWS_WITH(morph_key_poses(keys, eased), Contains("easing: one entry per segment: 3 segments, 1 entries"));
+}

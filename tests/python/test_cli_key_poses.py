@@ -106,6 +106,13 @@ def test_keys_at_loop_and_hold(cli, corpus, tmp_path):
     assert np.linalg.norm(seam[2] - 2 * seam[1] + seam[0]) <= 0.25 * steps.mean()
     assert sm.measure(frames, keys + [keys[0]], edges, [0, 49, 98, 147])["invalid_frames"] == []
 
+    # --easing in-out on a segment holds both its keys: the same frames as --hold.
+    eased = tmp_path / "eased.json"
+    assert run(cli, "morph", *paths, "-o", eased, "--easing", "none,in-out").returncode == 0
+    held_both = tmp_path / "held_both.json"
+    assert run(cli, "morph", *paths, "-o", held_both, "--hold", "2,3").returncode == 0
+    assert json.loads(eased.read_text())["frames"] == json.loads(held_both.read_text())["frames"]
+
     held = tmp_path / "held.json"
     assert run(cli, "morph", *paths, "-o", held, "--hold", "2").returncode == 0
     frames = np.asarray(json.loads(held.read_text())["frames"], dtype=float).reshape(99, -1)
@@ -146,7 +153,8 @@ def test_bad_sequences_are_refused_naming_the_key_and_nothing_is_written(cli, co
     refused(run(cli, "morph", *paths, "-o", out, "--frames", 30, "--keys-at", "0,10,28"), "key 3 must be at frame 29")
     refused(run(cli, "morph", *paths, "-o", out, "--keys-at", "0,x,98"), "--keys-at", "entry 2")
     refused(run(cli, "morph", *paths, "-o", out, "--hold", "4"), "--hold names keys 1 to 3")
-    refused(run(cli, "morph", *paths, "-o", out, "--easing", "in-out"), "--easing")
+    refused(run(cli, "morph", *paths, "-o", out, "--easing", "in-out,none,none"), "--easing", "one per segment (2)")
+    refused(run(cli, "morph", *paths, "-o", out, "--easing", "slow"), "easing")
     refused(run(cli, "morph", *paths, "-o", out, "--method", "linear"), "--method rigid only")
     refused(run(cli, "morph", *paths, "-o", out, "--pin", "0:0"), "--pin needs --correspond auto")
     # Matched, a mirrored skeleton may well be the same figure (left and right limbs swapped);

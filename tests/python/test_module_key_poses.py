@@ -58,6 +58,10 @@ def test_loop_hold_and_one_rotation_for_every_segment(sequence):
     looped = stickmorph.morph_key_poses(keys, edges, loop=True, rotation="short", turns=0)
     assert looped["keys_at"] == [0, 49, 98] and len(looped["segments"]) == 3
     assert np.array_equal(looped["frames"][-1], np.asarray(keys[0], dtype=float))
+    eased = stickmorph.morph_key_poses(keys, edges, easing="in-out")
+    assert np.array_equal(eased["frames"], stickmorph.morph_key_poses(keys, edges, hold=[True] * 3)["frames"])
+    with pytest.raises(stickmorph.InvalidArgumentError, match="easing"):
+        stickmorph.morph_key_poses(keys, edges, easing="slow")
     held = stickmorph.morph_key_poses(keys, edges, hold=[False, True, False])
     steps = np.linalg.norm(np.diff(held["frames"].reshape(len(held["frames"]), -1), axis=0), axis=1)
     assert steps[48] < 0.05 * steps.mean()
