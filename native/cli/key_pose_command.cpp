@@ -11,6 +11,7 @@
 #include "stickmorph/figure_io.h"
 #include "stickmorph/frame_certificate.h"
 #include "stickmorph/io/result_files.h"
+#include "stickmorph/io/svg_output.h"
 #include "stickmorph/key_pose_morph.h"
 #include "stickmorph/morph.h"
 #include "stickmorph/similarity_motion.h"
@@ -24,9 +25,9 @@ struct Unsupported {
   const char* why;
 };
 constexpr Unsupported kUnsupported[] = {
-    {"--svg", "the filmstrip of a sequence is not built yet"},
-    {"--svg-triangulation", "the filmstrip of a sequence is not built yet"},
-    {"--svg-compare-linear", "the filmstrip of a sequence is not built yet"},
+    {"--svg-triangulation", "each segment has its own triangulation; --svg draws the sequence's filmstrip"},
+    {"--svg-compare-linear", "--svg draws the sequence's filmstrip; the straight-line comparison is built for "
+                             "pairs"},
 };
 
 // --rotation and --turns: one value for every segment, or one per segment.
@@ -66,7 +67,10 @@ int run_key_poses(const ParsedArguments& arguments) {
   std::vector<NamedPath> inputs;
   for (std::size_t k = 0; k < arguments.positional.size(); ++k)
     inputs.push_back({"KEY" + std::to_string(k + 1) + ".json", arguments.positional[k]});
-  OutputFiles outputs("morph", {{"--output", output}}, inputs);
+  std::vector<NamedPath> written{{"--output", output}};
+  const std::string* svg = option_value(arguments, "--svg");
+  if (svg) written.push_back({"--svg", *svg});
+  OutputFiles outputs("morph", written, inputs);
 
   const std::size_t keys = arguments.positional.size();
   KeyPoseMorphOptions options;
@@ -118,7 +122,14 @@ int run_key_poses(const ParsedArguments& arguments) {
   std::vector<StickFigure> figures;
   for (const std::string& path : arguments.positional) figures.push_back(read_figure_file(path));
   const KeyPoseMorphResult result = morph_key_poses(figures, options);
-  outputs.commit({key_pose_file_json(figures[0], result, options.verify.value_or(true))});
+  std::vector<std::string> files{key_pose_file_json(figures[0], result, options.verify.value_or(true))};
+  if (svg) {
+    // The frames' own figure: the matched one with --correspond auto.
+    const StickFigure& drawn = result.correspondence ? result.correspondence->keys[0] : figures[0];
+    files.push_back(key_pose_filmstrip_svg(drawn, result.frames, result.times, result.key_frames, 2,
+                                           "stickmorph morph: " + std::to_string(keys) + " key poses"));
+  }
+  outputs.commit(files);
   return 0;
 }
 

@@ -178,19 +178,20 @@ std::vector<int> snapshot_frames(int count, int snapshots) {
 
 // One row of snapshots at height `row_y`, all drawn at the scale of `sets`
 // so that motion and size changes show; `marked` snapshots get a red
-// caption (the straight-line morph's self-intersecting frames).
+// caption (the straight-line morph's self-intersecting frames). Captions
+// are `label` and the time, or `captions[i]` where given.
 void draw_filmstrip_row(std::ostringstream& out, const StickFigure& source, const std::vector<std::vector<Vec2>>& frames,
                         const std::vector<double>& times, const std::vector<int>& chosen,
                         const std::vector<const std::vector<Vec2>*>& sets, std::size_t count,
                         const FigureTriangulation* tri, double row_y, const std::string& label,
-                        const std::vector<int>* marked) {
+                        const std::vector<int>* marked, const std::vector<std::string>* captions = nullptr) {
   for (std::size_t i = 0; i < chosen.size(); ++i) {
     const int f = chosen[i];
     const Frame frame(sets, count, double(i) * kPanel, row_y);
     if (tri) draw_triangles(out, frame, frames[f], tri->triangles);
     draw_figure(out, frame, source, frames[f], blend(times[f]), 2.0, false);
     const bool bad = marked && std::find(marked->begin(), marked->end(), f) != marked->end();
-    std::string text = label + "t = " + number(times[f]);
+    std::string text = captions ? (*captions)[i] : label + "t = " + number(times[f]);
     if (bad) text += " (self-intersects)";
     out << "<text x=\"" << number(double(i) * kPanel + kPanel / 2) << "\" y=\"" << number(row_y + kPanel + 16)
         << "\" font-family=\"sans-serif\" font-size=\"12\" text-anchor=\"middle\" fill=\""
@@ -210,6 +211,41 @@ std::string filmstrip_svg(const StickFigure& source, const std::vector<std::vect
   out << header(double(chosen.size()) * kPanel, kPanel + 24, title);
   draw_filmstrip_row(out, source, frames, times, chosen, sets,
                      tri ? std::size_t(tri->node_count()) : source.vertices.size(), tri, 0, "", nullptr);
+  out << "</svg>\n";
+  return out.str();
+}
+
+std::string key_pose_filmstrip_svg(const StickFigure& figure, const std::vector<std::vector<Vec2>>& frames,
+                                   const std::vector<double>& times, const std::vector<int>& key_frames,
+                                   int between, const std::string& title) {
+  // Every key, `between` frames evenly inside every segment, and the last
+  // frame (key 1 again after a loop).
+  std::vector<int> chosen;
+  std::vector<std::string> captions;
+  const int last = int(frames.size()) - 1;
+  for (std::size_t k = 0; k < key_frames.size(); ++k) {
+    const int from = key_frames[k], to = k + 1 < key_frames.size() ? key_frames[k + 1] : last;
+    chosen.push_back(from);
+    captions.push_back("key " + std::to_string(k + 1) + ", frame " + std::to_string(from));
+    for (int i = 1; i <= between && to > from; ++i) {
+      const int f = from + int(std::lround(double(i) * (to - from) / (between + 1)));
+      if (f <= chosen.back() || f >= to) continue;
+      chosen.push_back(f);
+      captions.push_back("frame " + std::to_string(f));
+    }
+  }
+  if (chosen.back() != last) {
+    chosen.push_back(last);
+    captions.push_back(key_frames.back() == last ? "key " + std::to_string(key_frames.size()) + ", frame " +
+                                                       std::to_string(last)
+                                                 : "key 1, frame " + std::to_string(last));
+  }
+  std::vector<const std::vector<Vec2>*> sets;
+  for (int f : chosen) sets.push_back(&frames[f]);
+  std::ostringstream out;
+  out << header(double(chosen.size()) * kPanel, kPanel + 24, title);
+  draw_filmstrip_row(out, figure, frames, times, chosen, sets, figure.vertices.size(), nullptr, 0, "", nullptr,
+                     &captions);
   out << "</svg>\n";
   return out.str();
 }

@@ -120,6 +120,26 @@ def test_keys_at_loop_and_hold(cli, corpus, tmp_path):
     assert steps[48] < 0.05 * steps.mean() and steps[49] < 0.05 * steps.mean()  # at rest at key 2 (frame 49)
 
 
+def test_svg_draws_the_sequence_filmstrip_with_every_key(cli, corpus, tmp_path):
+    import xml.dom.minidom
+    _, manifest = corpus
+    entry = next(e for e in manifest if len(e["keys"]) >= 4)
+    paths = key_paths(corpus, entry)[:4]
+    out, svg = tmp_path / "seq.json", tmp_path / "seq.svg"
+    assert run(cli, "morph", *paths, "-o", out, "--svg", svg, "--loop").returncode == 0
+    texts = [t.firstChild.data for t in xml.dom.minidom.parse(str(svg)).getElementsByTagName("text")]
+    assert [t for t in texts if t.startswith("key ")] == \
+        ["key 1, frame 0", "key 2, frame 49", "key 3, frame 98", "key 4, frame 147", "key 1, frame 196"]
+    assert len(texts) == 5 + 4 * 2
+    # Drawn separately: the matched figure's filmstrip.
+    drawn = [corpus[0] / name for name in entry["drawn"]][:3]
+    assert run(cli, "morph", *drawn, "-o", out, "--svg", svg, "--correspond", "auto").returncode == 0
+    xml.dom.minidom.parse(str(svg))
+    refused(run(cli, "morph", *paths, "-o", tmp_path / "x.json", "--svg", tmp_path / "x.svg", "--svg-triangulation"),
+            "--svg-triangulation")
+    assert not (tmp_path / "x.json").exists() and not (tmp_path / "x.svg").exists()
+
+
 def test_two_files_are_still_a_pair_and_two_with_loop_a_sequence(cli, corpus, tmp_path):
     _, manifest = corpus
     paths = key_paths(corpus, manifest[0])[:2]

@@ -29,6 +29,13 @@ std::string filmstrip_svg(const StickFigure& source, const std::vector<std::vect
                           const std::vector<double>& times, int snapshots, const FigureTriangulation* triangulation,
                           const std::string& title);
 
+/// A filmstrip of a morph through key poses: every key (captioned "key k,
+/// frame F") and `between` frames inside every segment, the last frame
+/// too; frames[f] holds at least the figure's vertices (#V by 2).
+std::string key_pose_filmstrip_svg(const StickFigure& figure, const std::vector<std::vector<Vec2>>& frames,
+                                   const std::vector<double>& times, const std::vector<int>& key_frames,
+                                   int between, const std::string& title);
+
 /// Our morph (top row) against the straight-line morph (bottom row, the
 /// paper's Figure 8d) at the same snapshots and one scale. Both hold the
 /// figure's vertices per frame (#V by 2 at least); snapshots of frames listed
