@@ -183,6 +183,20 @@ def fmt_exponent(fit):
     return f"{slope:.2f} ({count})" if slope is not None else f"n/a (only {count})"
 
 
+def median(values):
+    """The median of the values that are not None, or None when there are none."""
+    values = sorted(v for v in values if v is not None)
+    if not values:
+        return None
+    mid = len(values) // 2
+    return values[mid] if len(values) % 2 else (values[mid - 1] + values[mid]) / 2
+
+
+def optional_number(value, spec=".3f"):
+    """A number for a table cell, an en dash for None."""
+    return "–" if value is None else format(value, spec)
+
+
 def cell_text(text):
     return text.replace("|", "\\|").replace("\n", " ")
 

@@ -6,6 +6,7 @@ import shlex
 import subprocess
 
 from .common import COLORS, FixedLocator, InputError, NullFormatter, fmt_ms, plt, table
+from .common import median as _median, optional_number as _num
 
 # The repository's root (bench/benchmarks_md/ is two folders below it).
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -40,22 +41,11 @@ def motion_targets_met(motion):
                f"/{len(motion['targets'])}" for m in motion["methods"]}
 
 
-def _num(value, spec):
-    return "–" if value is None else format(value, spec)
-
-
 def _motion_rows(motion, method):
     """The per-pair results of one method that did not fail: (name, pair, result)."""
     return [(name, pair, pair[method]) for name, pair in motion["pairs"].items()
             if isinstance(pair.get(method), dict) and "error" not in pair[method]]
 
-
-def _median(values):
-    values = sorted(v for v in values if v is not None)
-    if not values:
-        return None
-    mid = len(values) // 2
-    return values[mid] if len(values) % 2 else (values[mid - 1] + values[mid]) / 2
 
 
 def _git_ignored(path):

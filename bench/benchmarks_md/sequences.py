@@ -6,6 +6,7 @@ import json
 import os
 
 from .common import COLORS, InputError, plt, table
+from .common import median as _median, optional_number as _num
 
 MODE_LABELS = {
     "sequence": "sequence morph (`morph KEY1 ... KEYK`)",
@@ -36,18 +37,6 @@ def read_sequences(data_dir):
     except (OSError, ValueError, KeyError, TypeError) as error:
         raise InputError(f"{path}: {error!r}") from error
     return rows
-
-
-def _median(values):
-    values = sorted(v for v in values if v is not None)
-    if not values:
-        return None
-    mid = len(values) // 2
-    return values[mid] if len(values) % 2 else (values[mid - 1] + values[mid]) / 2
-
-
-def _num(value, spec=".3f"):
-    return "–" if value is None else format(value, spec)
 
 
 def _summary_rows(rows, modes, kinds):

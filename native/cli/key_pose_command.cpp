@@ -30,7 +30,7 @@ constexpr Unsupported kUnsupported[] = {
                              "pairs"},
 };
 
-// --rotation and --turns: one value for every segment, or one per segment.
+// --rotation, --easing and --turns: one value for every segment, or one per segment.
 std::vector<std::string> comma_list(const std::string& text) {
   std::vector<std::string> entries;
   std::size_t start = 0;
@@ -40,6 +40,28 @@ std::vector<std::string> comma_list(const std::string& text) {
     if (comma == std::string::npos) return entries;
     start = comma + 1;
   }
+}
+
+// A per-segment option takes one value for every segment or one per segment.
+void check_segment_count(const char* option, const char* what, std::size_t given, std::size_t segments) {
+  if (given != 1 && given != segments)
+    throw InvalidArgumentError("morph: " + std::string(option) + " takes one " + what +
+                               " for every segment or one per segment (" + std::to_string(segments) + "), got " +
+                               std::to_string(given));
+}
+
+// --rotation and --easing: comma-separated names, one per segment after
+// the count is checked (empty when the option is absent).
+template <class Parse>
+auto per_segment(const ParsedArguments& arguments, const char* option, const char* what, std::size_t segments,
+                 Parse parse) -> std::vector<decltype(parse(std::string()))> {
+  std::vector<decltype(parse(std::string()))> values;
+  const std::string* text = option_value(arguments, option);
+  if (!text) return values;
+  const std::vector<std::string> names = comma_list(*text);
+  check_segment_count(option, what, names.size(), segments);
+  for (std::size_t s = 0; s < segments; ++s) values.push_back(parse(names[names.size() == 1 ? 0 : s]));
+  return values;
 }
 
 }  // namespace
@@ -88,25 +110,13 @@ int run_key_poses(const ParsedArguments& arguments) {
       options.hold[std::size_t(key - 1)] = true;
     }
   }
-  if (const std::string* text = option_value(arguments, "--rotation")) {
-    const std::vector<std::string> names = comma_list(*text);
-    if (names.size() != 1 && names.size() != segments)
-      throw InvalidArgumentError("morph: --rotation takes one direction for every segment or one per segment (" +
-                                 std::to_string(segments) + "), got " + std::to_string(names.size()));
-    for (std::size_t s = 0; s < segments; ++s) options.rotation.push_back(parse_rotation_direction(names[names.size() == 1 ? 0 : s]));
-  }
-  if (const std::string* text = option_value(arguments, "--easing")) {
-    const std::vector<std::string> names = comma_list(*text);
-    if (names.size() != 1 && names.size() != segments)
-      throw InvalidArgumentError("morph: --easing takes one easing for every segment or one per segment (" +
-                                 std::to_string(segments) + "), got " + std::to_string(names.size()));
-    for (std::size_t s = 0; s < segments; ++s) options.easing.push_back(parse_easing(names[names.size() == 1 ? 0 : s]));
-  }
+  options.rotation = per_segment(arguments, "--rotation", "direction", segments,
+                                 [](const std::string& name) { return parse_rotation_direction(name); });
+  options.easing =
+      per_segment(arguments, "--easing", "easing", segments, [](const std::string& name) { return parse_easing(name); });
   if (option_value(arguments, "--turns")) {
     const std::vector<long long> turns = integer_list_option(arguments, "--turns");
-    if (turns.size() != 1 && turns.size() != segments)
-      throw InvalidArgumentError("morph: --turns takes one count for every segment or one per segment (" +
-                                 std::to_string(segments) + "), got " + std::to_string(turns.size()));
+    check_segment_count("--turns", "count", turns.size(), segments);
     for (std::size_t s = 0; s < segments; ++s) options.turns.push_back(turns[turns.size() == 1 ? 0 : s]);
   }
   if (const std::string* name = option_value(arguments, "--correspond"))
