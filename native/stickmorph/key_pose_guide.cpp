@@ -61,6 +61,10 @@ void check_inputs(const std::vector<std::vector<Vec2>>& keys, const std::vector<
 
 }  // namespace
 
+// The part of a segment, from either end, over which an edge's log-length
+// turns from the segment's straight line into the tangent at the knot.
+constexpr double kLengthBlend = 0.25;
+
 struct KeyPoseGuide::State {
   int n = 0;
   int edge_count = 0;
@@ -185,10 +189,27 @@ std::vector<Vec2> KeyPoseGuide::at(double t) const {
   const std::vector<double>& m0 = s.tangent[std::size_t(segment)];
   const std::vector<double>& m1 = s.tangent[std::size_t(segment) + 1];
   auto channel = [&](std::size_t c) { return h00 * y0[c] + h10 * width * m0[c] + h01 * y1[c] + h11 * width * m1[c]; };
+  // The log-lengths: the straight line of the segment, turned into the
+  // knots' tangents only within kLengthBlend of either end (blend_in and
+  // blend_out: value 0 and slope 1 at their knot, value and slope 0 from
+  // kLengthBlend on). The same values and tangents at the knots as the
+  // Hermite curve, so C1 as well, but an edge changes its length linearly
+  // over most of the segment, as the pair morph's does (its rigidity
+  // target, issue 28): a Hermite curve bends the whole segment, 4 times as
+  // far from the line on average.
+  const double in = u < kLengthBlend ? u * (1 - u / kLengthBlend) * (1 - u / kLengthBlend) : 0.0;
+  const double v = 1 - u;
+  const double out = v < kLengthBlend ? -v * (1 - v / kLengthBlend) * (1 - v / kLengthBlend) : 0.0;
+  auto log_length = [&](std::size_t c) {
+    if (u <= 0) return y0[c];  // the knots' own values, not rounded through the line
+    if (u >= 1) return y1[c];
+    const double slope = (y1[c] - y0[c]) / width;
+    return y0[c] + slope * width * u + width * ((m0[c] - slope) * in + (m1[c] - slope) * out);
+  };
   const std::size_t m = std::size_t(s.edge_count);
   std::vector<Vec2> edge_vectors(m);
   for (std::size_t e = 0; e < m; ++e) {
-    const double angle = channel(e), length = std::exp(channel(m + e));
+    const double angle = channel(e), length = std::exp(log_length(m + e));
     edge_vectors[e] = {length * std::cos(angle), length * std::sin(angle)};
   }
   const std::size_t parts = std::size_t(s.fit->part_count());
