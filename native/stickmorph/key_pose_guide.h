@@ -30,6 +30,14 @@
 // and the tangents are periodic, so the motion joins itself smoothly; a
 // held key has tangent zero: the motion stops there.
 //
+// The log-lengths take the same values and tangents at the knots but not
+// the cubic between them: each follows its segment's straight line and
+// turns into the knot's tangent only within a quarter of the segment from
+// either end (x (1 - x/b)^2 blends, value 0 and slope 1 at the knot, flat
+// from b on). Still C1, and an edge changes its length linearly over most
+// of a segment, as in the pair morph; a cubic bends the whole segment
+// (issue 28 holds each segment to the pair morph's rigidity target).
+//
 // Like RigidGuide, nothing here keeps the guide from self-intersecting (and
 // between keys a spline may overshoot where a linear turn would not): the
 // sequence morph follows it only as closely as validity allows, and checks
