@@ -29,10 +29,10 @@ OPTION_NAMES = ("motion", "correspondence", "rotation", "turns", "frame_count", 
 # The options of Bake Key Poses (sequence_operators.py): motion and easing
 # too, so that a setting key poses cannot follow is refused with a report,
 # not ignored (the panel passes the scene's). Rebake Shape Keys: one mesh,
-# by index, Rigid, no easing.
+# by index, Rigid.
 SEQUENCE_OPTIONS = ("motion", "correspondence", "rotation", "turns", "steiner", "weights", "enclosure_sides",
                     "plane", "easing", "renderable", "tube_radius", "planarity_tolerance", "set_frame_range")
-REBAKE_OPTIONS = ("rotation", "turns", "steiner", "weights", "enclosure_sides", "plane", "renderable",
+REBAKE_OPTIONS = ("rotation", "turns", "steiner", "weights", "enclosure_sides", "plane", "easing", "renderable",
                   "tube_radius", "planarity_tolerance", "set_frame_range")
 
 # The properties' defaults, defined once (common.BakeSettings).

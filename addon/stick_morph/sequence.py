@@ -16,8 +16,9 @@ engine's stickmorph.morph_key_poses and maps its frames back to world space.
 Heights: each key keeps its vertices' distances h_k from the common plane
 (for a matched sequence, a dummy's interpolated along its key's edge, as for
 a pair). A frame f of the segment from key a (frame f_a) to key b (f_b) has
-the height (1 - s) h_a + s h_b, s = (f - f_a) / (f_b - f_a): the keys are
-exact, and keys drawn in one plane stay in it.
+the height (1 - s) h_a + s h_b, s = (f - f_a) / (f_b - f_a) (eased as the
+segment is, with Easing): the keys are exact, and keys drawn in one plane
+stay in it.
 """
 
 from __future__ import annotations
@@ -32,6 +33,7 @@ from .correspondence import CORRESPONDENCES, _names, check_pins, compare_edge_se
 from .morph import ROTATIONS, refuse_faces, refuse_non_finite
 from .native import load_engine
 from .plane import Plane, check_planarity, fit_plane_of, project, unproject
+from .timing import RIGID_EASINGS, ease
 
 # An object's key frame (its Object property stick_morph_key_frame): 0 means
 # automatic, evenly spaced from the start frame.
@@ -167,13 +169,23 @@ def pose_holds(poses) -> list[bool]:
 
 # --------------------------------------------------------------- keys ----
 
-def supports_matching(engine=None) -> bool:
-    """Whether the module's morph_key_poses takes correspond= (keys drawn
-    separately); read from its signature, the docstring's first line."""
+def _takes(argument: str, engine=None) -> bool:
+    """Whether the module's morph_key_poses takes this keyword argument;
+    read from its signature, the docstring's first line."""
     engine = engine or load_engine()
     doc = getattr(engine.morph_key_poses, "__doc__", None) or ""
     signature = doc.strip().splitlines()[0] if doc.strip() else ""
-    return re.search(r"\bcorrespond\b", signature) is not None
+    return re.search(rf"\b{argument}\b", signature) is not None
+
+
+def supports_matching(engine=None) -> bool:
+    """Whether the module's morph_key_poses takes correspond= (keys drawn separately)."""
+    return _takes("correspond", engine)
+
+
+def supports_easing(engine=None) -> bool:
+    """Whether the module's morph_key_poses takes easing= (eased segments)."""
+    return _takes("easing", engine)
 
 
 @dataclass
@@ -206,10 +218,12 @@ def refuse_unsupported_options(settings: BakeSettings) -> None:
         raise StickMorphError(
             f"key poses move with the Rigid motion only (Motion is {settings.motion.title()}): the engine "
             "morphs a sequence of keys rigidly; set Motion to Rigid")
-    if settings.easing != "NONE":
+    if settings.easing not in RIGID_EASINGS:
+        raise StickMorphError(f"unknown easing {settings.easing!r} (choose one of {', '.join(RIGID_EASINGS)})")
+    if settings.easing != "NONE" and not supports_easing():
         raise StickMorphError(
-            "Easing applies to a pair only: the motion through key poses keeps its speed continuous "
-            "through every key (Hold at Keys stops it at each key instead); set Easing to Linear")
+            "Easing of key poses needs a newer stickmorph module (this one's morph_key_poses has no easing=); "
+            "set Easing to Linear, or Hold at Keys to stop the motion at each key")
     if settings.rotation not in ROTATIONS:
         raise StickMorphError(f"unknown rotation {settings.rotation!r} (choose one of {', '.join(ROTATIONS)})")
     if settings.correspondence not in CORRESPONDENCES:
@@ -322,13 +336,14 @@ def key_error_message(error: Exception, names) -> str:
     return f"stickmorph: {text}"
 
 
-def _frame_heights(heights, segments, frame_count: int) -> np.ndarray:
-    """(N, m) heights: each segment's keys' heights, blended by frame."""
+def _frame_heights(heights, segments, frame_count: int, easing: str = "NONE") -> np.ndarray:
+    """(N, m) heights: each segment's keys' heights, blended by frame (eased
+    as the segments are: timing.ease)."""
     out = np.empty((frame_count, len(heights[0])))
     for segment in segments:
         first, last = int(segment["first_frame"]), int(segment["last_frame"])
         a, b = heights[int(segment["from_key"])], heights[int(segment["to_key"])]
-        s = (np.arange(first, last + 1) - first) / max(last - first, 1)
+        s = ease((np.arange(first, last + 1) - first) / max(last - first, 1), easing)
         out[first:last + 1] = (1.0 - s)[:, None] * a[None, :] + s[:, None] * b[None, :]
     return out
 
@@ -343,6 +358,8 @@ def morph_keys(prepared: PreparedKeys, settings: BakeSettings, frame_count: int,
                    hold=None if hold is None else [bool(h) for h in hold],
                    rotation=settings.rotation.lower(), turns=int(settings.turns), steiner=settings.steiner,
                    weights=settings.weights, enclosure_sides=int(settings.enclosure_sides), verify=True)
+    if settings.easing != "NONE":  # every segment eased (a module without easing= was refused)
+        options["easing"] = RIGID_EASINGS[settings.easing]
 
     def run(matched):
         if matched:
@@ -375,7 +392,7 @@ def morph_keys(prepared: PreparedKeys, settings: BakeSettings, frame_count: int,
     else:
         heights = prepared.heights
     frames_xy = np.asarray(result["frames"], dtype=np.float64)
-    frame_heights = _frame_heights(heights, result["segments"], len(frames_xy))
+    frame_heights = _frame_heights(heights, result["segments"], len(frames_xy), settings.easing)
     return SequenceResult(unproject(frames_xy, frame_heights, prepared.plane),
                           np.asarray(result["edges"], dtype=np.int64).reshape(-1, 2), list(result["keys_at"]),
                           list(result["segments"]), matched, why, places)

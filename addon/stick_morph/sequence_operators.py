@@ -243,8 +243,7 @@ class STICKMORPH_OT_rebake_shape_keys(BakeExecute, bpy.types.Operator):
         frames, blocks, values = shape_key_animation(obj)
         basis = obj.data.shape_keys.reference_key
         poses = sequence.pose_to_pose(obj.name, frames, [b.name for b in blocks], values, basis.name)
-        settings = _settings(self, REBAKE_OPTIONS, poses[0].frame, motion="RIGID", easing="NONE",
-                             correspondence="INDEX")
+        settings = _settings(self, REBAKE_OPTIONS, poses[0].frame, motion="RIGID", correspondence="INDEX")
         depsgraph = baking.evaluated_depsgraph(context)
         _, edges, faces = baking.mesh_world_data(obj, depsgraph)
         shapes = [baking.shape_key_world(obj, basis if pose.key < 0 else blocks[pose.key], depsgraph)

@@ -113,7 +113,8 @@ def figure_size(worlds):
 def expected_frames(worlds, frames, keys_at, edges=EDGES, **options):
     """The engine's morph through the keys (world coordinates), in world space:
     projected onto their common plane, each frame's heights blended between
-    its segment's keys by frame (sequence.py's docstring)."""
+    its segment's keys by frame, smoothstep with easing="in-out"
+    (sequence.py's docstring)."""
     plane = addon_import("plane").fit_plane_of(worlds, "AUTO")
     projected = [addon_import("plane").project(w, plane) for w in worlds]
     engine = addon_import("core").load_engine()
@@ -123,6 +124,8 @@ def expected_frames(worlds, frames, keys_at, edges=EDGES, **options):
     for segment in result["segments"]:
         a, b, f0, f1 = (segment[k] for k in ("from_key", "to_key", "first_frame", "last_frame"))
         s = (np.arange(f0, f1 + 1) - f0) / (f1 - f0)
+        if options.get("easing") == "in-out":
+            s = s * s * (3 - 2 * s)
         heights[f0:f1 + 1] = np.outer(1 - s, projected[a][1]) + np.outer(s, projected[b][1])
     xy = result["frames"]
     world = plane.origin + xy[..., :1] * plane.u + xy[..., 1:] * plane.v + heights[..., None] * plane.normal
@@ -217,6 +220,23 @@ def test_hold_stops_at_every_key(scene, addon):
     check_result(result, expected, 1, figure_size(worlds))
 
 
+def test_easing_eases_every_segment(scene, addon):
+    if not sequence_module().supports_easing():
+        pytest.skip("this stickmorph module's morph_key_poses has no easing= (eased segments)")
+    objects = make_keys()
+    select(*objects)
+    assert bpy.ops.object.stick_morph_bake_sequence(frame_step=8, easing="IN_OUT", frame_start=1) == {"FINISHED"}
+    result = bpy.context.view_layer.objects.active
+    worlds = [world_coords(o) for o in objects]
+    expected, _ = expected_frames(worlds, 25, [0, 8, 16, 24], easing="in-out")
+    check_result(result, expected, 1, figure_size(worlds))
+    obj, _ = make_animated()
+    assert bpy.ops.object.stick_morph_rebake_shape_keys(easing="IN_OUT") == {"FINISHED"}
+    keys = [shape_world(obj, k) for k in (0, 1, 2, 3, 0)]
+    expected, _ = expected_frames(keys, 49, [0, 12, 24, 36, 48], easing="in-out")
+    check_result(bpy.context.view_layer.objects.active, expected, 1, figure_size(keys))
+
+
 def test_bake_key_poses_undo(scene, addon):
     objects = make_keys()
     select(*objects)
@@ -270,8 +290,6 @@ def test_bake_key_poses_refusals_name_the_key(scene, addon):
         obj.stick_morph_key_frame = 0
     message = operator_fails(bake, motion="BARYCENTRIC")
     assert "Rigid motion only" in message, message
-    message = operator_fails(bake, easing="IN_OUT")
-    assert "Easing" in message, message
     # A mirror image between keys 2 and 3 by index: the engine's report,
     # named. (Automatic would match it where the module matches key poses:
     # the mirrored man is the man with his arms and legs swapped.)
@@ -376,13 +394,22 @@ def test_pins_of_neighbouring_keys(scene, addon):
     assert "pins need Correspondence (Match) Automatic or By Shape" in message, message
 
 
-def test_keys_that_need_matching_without_the_module_matching(scene, addon):
+def test_a_module_without_matching_or_easing_refuses_them(scene, addon, monkeypatch):
+    """A module whose morph_key_poses lacks correspond= or easing= (the
+    module before issue 28's matching and easing; simulated where the module
+    has them) gives a clear report, never a wrong result."""
     seq = sequence_module()
     if seq.supports_matching():
-        pytest.skip("this stickmorph module matches key poses (test_matched_keys_when_the_module_matches)")
+        monkeypatch.setattr(seq, "supports_matching", lambda engine=None: False)
+    if seq.supports_easing():
+        monkeypatch.setattr(seq, "supports_easing", lambda engine=None: False)
     objects, edges = drawn_separately()
     message = operator_fails(bpy.ops.object.stick_morph_bake_sequence)
     assert "the vertex counts differ" in message and "cannot match key poses" in message, message
+    objects = make_keys(names=("Other_1", "Other_2", "Other_3", "Other_4"))
+    select(*objects)
+    message = operator_fails(bpy.ops.object.stick_morph_bake_sequence, easing="IN_OUT")
+    assert "Easing of key poses needs a newer stickmorph module" in message, message
 
 
 # ------------------------------------------------- Rebake Shape Keys ----
