@@ -36,14 +36,17 @@ def _settings(op, names, frame_start, **fixed):
 
 
 def _finish(op, context, result, previous, created, settings, first_frame, frame_count, sequence, names,
-            milliseconds, what):
+            milliseconds, what, loop=False):
     """Replaces the previous result, sets the frame range and the panel's
     last-bake box, makes the result active and reports per segment."""
     from . import baking, sequence as seq
     baking.replace_previous(previous, created)
     if settings.set_frame_range:
         context.scene.frame_start = first_frame
-        context.scene.frame_end = first_frame + frame_count - 1
+        # A loop's closing frame is its first pose again: the scene's range
+        # stops one frame short, so that Blender's looping playback shows
+        # that pose once per cycle (the closing frame stays baked).
+        context.scene.frame_end = first_frame + frame_count - (2 if loop else 1)
     baking.select_only(context, result)
     vertices = sequence.frames_world.shape[1]
     steiner = sum(int(s.get("steiner_vertices", 0)) for s in sequence.segments)
@@ -95,7 +98,7 @@ class STICKMORPH_OT_bake_sequence(BakeExecute, bpy.types.Operator):
                                   SEQUENCE_OPTIONS)
 
     def _key_objects(self, context):
-        from . import sequence
+        from . import baking, sequence
         if self.keys.strip():
             try:
                 names = json.loads(self.keys)
@@ -117,7 +120,8 @@ class STICKMORPH_OT_bake_sequence(BakeExecute, bpy.types.Operator):
                 raise StickMorphError(f"the collection '{collection.name}' holds {len(objects)} mesh "
                                       f"object{'' if len(objects) == 1 else 's'}; key poses need two or more")
         else:
-            selected = [obj for obj in context.selected_objects]
+            # An earlier bake's result is not a key, even if it is selected.
+            selected = [obj for obj in context.selected_objects if baking.ROLE not in obj]
             objects = [selected[k] for k in sequence.order_by_name([obj.name for obj in selected])]
             if len(objects) < 2:
                 raise StickMorphError(
@@ -164,7 +168,7 @@ class STICKMORPH_OT_bake_sequence(BakeExecute, bpy.types.Operator):
             raise StickMorphError(f"building the result failed: {error}") from error
         progress.stage("build", 100)
         _finish(self, context, obj, previous, created, settings, frames[0], frame_count, result, names,
-                (time.perf_counter() - started) * 1000.0, "key poses")
+                (time.perf_counter() - started) * 1000.0, "key poses", loop=self.loop)
         return {"FINISHED"}
 
 

@@ -207,7 +207,9 @@ def test_collection_order_own_key_frames_and_loop(scene, addon):
     assert len(engine_result["segments"]) == 4
     check_result(result, expected, 3, figure_size(worlds))
     assert np.abs(evaluated_world(result, 53) - worlds[0]).max() <= 1e-6 * figure_size(worlds)
-    assert (scene.frame_start, scene.frame_end) == (3, 53)
+    # The closing frame (53, key 1 again) is baked; the scene's range stops before it, so that
+    # looping playback shows key 1 once per cycle.
+    assert (scene.frame_start, scene.frame_end) == (3, 52)
 
 
 def test_hold_stops_at_every_key(scene, addon):
@@ -218,6 +220,10 @@ def test_hold_stops_at_every_key(scene, addon):
     worlds = [world_coords(o) for o in objects]
     expected, _ = expected_frames(worlds, 25, [0, 8, 16, 24], hold=[True] * 4)
     check_result(result, expected, 1, figure_size(worlds))
+    # Baking again with the earlier result selected too: the result is not taken as a fifth key.
+    select(*objects, result)
+    assert bpy.ops.object.stick_morph_bake_sequence(frame_step=8, hold=True, frame_start=1) == {"FINISHED"}
+    check_result(bpy.context.view_layer.objects.active, expected, 1, figure_size(worlds))
 
 
 def test_easing_eases_every_segment(scene, addon):
