@@ -281,9 +281,13 @@ std::vector<Vec2> KeyPoseMorphSolver::segment_frame(std::size_t s, double u, int
                         error.what());
   }
   MorphStickFiguresStats& stats = segment.stats;
-  if (frame.fit == GuideFit::Exact) ++stats.guide_exact_frames;
-  if (frame.fit == GuideFit::Blended) ++stats.guide_blended_frames;
-  if (frame.fit == GuideFit::Barycentric) ++stats.guide_barycentric_frames;
+  // Interior frames only, as the pair morph counts them: a segment's end
+  // frames are its keys, exactly, whatever the guide.
+  if (u > 0 && u < 1) {
+    if (frame.fit == GuideFit::Exact) ++stats.guide_exact_frames;
+    if (frame.fit == GuideFit::Blended) ++stats.guide_blended_frames;
+    if (frame.fit == GuideFit::Barycentric) ++stats.guide_barycentric_frames;
+  }
   if (frame.refined) ++stats.refined_frames;
   stats.morph_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const GuidedMorphStats& guided = st.morphs[s].stats();
