@@ -17,6 +17,10 @@ frames (S = K - 1 segments) with key k at F_k = round(k (N-1) / (K-1)), as docs/
   matched    the sequence morph of the keys drawn on their own (the corpus's "drawn" files,
              key_pose_corpus.py --redrawn) with `--correspond auto`: measured on the common
              figure, the key error over every key vertex (the file's "keys" places)
+  loop       (only when asked for) `stickmorph morph KEY1 ... KEYK --loop`, N = 49 K + 1: key 1
+             again at the last frame; also measured: the jump across the seam at key 1,
+             |(X[1] - X[0]) - (X[N-1] - X[N-2])| / mean step, and whether the last frame is key 1
+             bit for bit
 
 and measured, X[f] being frame f's vertex positions as one vector:
   valid      every frame is a drawing of the figure with key 1's rotation system, parts,
@@ -51,7 +55,8 @@ import multipart_check as topo  # noqa: E402  (the exact validity of a frame, in
 TIMEOUT_SECONDS = 600
 FRAMES_PER_SEGMENT = 49
 PASS_COSINE = 0.5
-MODES = ("chained", "sequence", "linear", "matched")
+MODES = ("chained", "sequence", "linear", "matched", "loop")
+DEFAULT_MODES = ("chained", "sequence", "linear", "matched")
 
 
 def key_frames(keys, frames):
@@ -112,6 +117,22 @@ def matched(cli, paths, frames, extra, tmp):
     return motion, [tuple(e) for e in doc["edges"]], keys_at, error
 
 
+def measure_loop(cli, paths, keys, edges, extra, tmp):
+    """The looped sequence morph's numbers: measure()'s over keys 1..K and key 1 again at the
+    last frame (its jumps at keys 2..K), plus the jump across the seam and the last frame."""
+    count = len(keys)
+    frames = FRAMES_PER_SEGMENT * count + 1
+    motion = sequence(cli, paths, frames, ["--loop", *extra], tmp)
+    keys_at = [round(k * (frames - 1) / count) for k in range(count)] + [frames - 1]
+    row = measure(motion, keys + [keys[0]], edges, keys_at)
+    flat = motion.reshape(len(motion), -1)
+    mean_step = float(np.linalg.norm(np.diff(flat, axis=0), axis=1).mean()) or 1e-300
+    row["seam_jump"] = float(np.linalg.norm((flat[1] - flat[0]) - (flat[-1] - flat[-2]))) / mean_step
+    row["last_is_key_1"] = bool(np.array_equal(motion[-1], keys[0]))
+    row["keys_at"] = keys_at
+    return row
+
+
 def measure(frames, keys, edges, keys_at):
     """The numbers of the module docstring for one motion (frames: N x V x 2)."""
     size = max(float(np.ptp(np.concatenate(keys), axis=0).max()), 1e-300)
@@ -162,7 +183,7 @@ def main(argv=None):
     ap.add_argument("--build-dir", type=pathlib.Path, default=mq.REPO / "build")
     ap.add_argument("--mode", action="append", choices=MODES,
                     help="which motions to measure (repeatable; default chained, sequence and linear, and "
-                         "matched where the corpus has drawn keys)")
+                         "matched where the corpus has drawn keys; loop only when asked for)")
     ap.add_argument("--extra", default="", help="more `stickmorph morph` arguments, e.g. \"--method rigid\"")
     ap.add_argument("--json", type=pathlib.Path, help="write the rows here")
     args = ap.parse_args(argv)
@@ -172,7 +193,7 @@ def main(argv=None):
         if not path.exists():
             print(f"error: {path} does not exist", file=sys.stderr)
             return 2
-    modes = args.mode or list(MODES)
+    modes = args.mode or list(DEFAULT_MODES)
     extra = shlex.split(args.extra)
     rows, unsupported = [], False
     with tempfile.TemporaryDirectory(prefix="sequence_motion_") as tmp:
@@ -194,6 +215,10 @@ def main(argv=None):
                         row.update(measure(motion, [motion[f] for f in common_at], common_edges, common_at))
                         row.update(key_error=key_error, vertices=int(motion.shape[1]))
                         row.update(profiles(motion))
+                        rows.append(row)
+                        continue
+                    if mode == "loop":
+                        row.update(measure_loop(cli, paths, keys, edges, extra, tmp))
                         rows.append(row)
                         continue
                     motion = (chained(cli, paths, keys_at, extra, tmp) if mode == "chained"
@@ -234,7 +259,10 @@ def main(argv=None):
                   f", pass speed {fmt(np.median(passes) if passes else None)}"
                   f", edge dev {fmt(np.median([r['edge_dev_median'] for r in mine]), '{:.4f}')}"
                   f", invalid frames {sum(len(r['invalid_frames']) for r in mine)}"
-                  f", worst key error {max(r['key_error'] for r in mine):.1e}")
+                  f", worst key error {max(r['key_error'] for r in mine):.1e}"
+                  + (f", seam jump {fmt(np.median([r['seam_jump'] for r in mine]))} (max "
+                     f"{fmt(max(r['seam_jump'] for r in mine))}), last frame key 1 in "
+                     f"{sum(r['last_is_key_1'] for r in mine)}" if mode == "loop" else ""))
     failed = [r for r in rows if "error" in r]
     if failed:
         print(f"  {len(failed)} motions refused: " + ", ".join(f"{r['name']} ({r['mode']})" for r in failed))

@@ -87,3 +87,18 @@ def test_chained_pairs_hit_their_keys_exactly(cli, tmp_path):
     assert len(frames) == keys_at[-1] + 1
     m = sm.measure(frames, keys, edges, keys_at)
     assert m["key_error"] == 0 and m["invalid_frames"] == []
+
+
+def test_loop_mode_measures_the_seam_and_the_closing_frame(cli, tmp_path):
+    """--mode loop (asked for only): `morph KEYS --loop` measured with key 1 again at the last
+    frame; the seam's jump and the last frame are reported, and stay within issue 28's bounds."""
+    corpus = tmp_path / "corpus"
+    assert kpc.main([str(corpus), "--build-dir", str(cli.parent), "--per-kind", "1"]) == 0
+    out = tmp_path / "loop.json"
+    assert sm.main([str(corpus), "--build-dir", str(cli.parent), "--mode", "loop", "--json", str(out)]) == 0
+    rows = json.loads(out.read_text())
+    assert rows and all(r["mode"] == "loop" and "error" not in r for r in rows)
+    for r in rows:
+        assert r["last_is_key_1"] and r["invalid_frames"] == [] and r["key_error"] == 0, r["name"]
+        assert r["keys_at"][-1] == r["frames"] - 1 and len(r["keys_at"]) == r["keys"] + 1
+        assert r["seam_jump"] <= 0.25, r["name"]
