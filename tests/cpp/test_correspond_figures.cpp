@@ -844,3 +844,24 @@ TEST_CASE("a pair matched in the working scale is morphed and written at its own
   // The similarity's centres are reported at the figures' scale too.
   CHECK(result.stats.similarity.source_center[0] > 1e38);
 }
+
+TEST_CASE("a matchable pair beyond the rigid method's size ratio is refused with NumericRangeError",
+          "[correspond_figures]") {
+  // fuzz_correspond_pair's finding (tests/data/fuzz/regressions/correspond_pair/
+  // morph_size_ratio_beyond_rigid_limit.bin): two dots about 1e-32 apart
+  // against two 0.0078 apart, pinned. The matching succeeds; the rigid
+  // morph refuses the size ratio (8e29 > kMaxRigidSizeRatio) before any
+  // work, with the documented NumericRangeError, not a crash.
+  const StickFigure source = make_stick_figure({{1.4791141972893971e-30, 0.0}, {1.488977384825e-30, 0.0}}, {});
+  const StickFigure target = make_stick_figure({{0.0078125, 0.0}, {0.0078125, 0.0078125}}, {});
+  CorrespondenceOptions matching;
+  matching.pins = {{0, 0}};
+  const FigureCorrespondence c = correspond_figures(source, target, matching);
+  REQUIRE(is_valid(c, source, target));
+  MorphStickFiguresOptions options;
+  options.frames = 3;
+  options.correspond = CorrespondenceMode::Auto;
+  options.pins = {{0, 0}};
+  REQUIRE_THROWS_AS(morph_stick_figures(source, target, options), NumericRangeError);
+  REQUIRE_THROWS_WITH(morph_stick_figures(source, target, options), Contains("beyond the rigid method's limit"));
+}
