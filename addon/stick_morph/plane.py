@@ -75,7 +75,16 @@ def fit_plane_of(figures, plane: str = "AUTO") -> Plane:
         return Plane(origin, u, v, np.cross(u, v), plane)
 
     centred = np.vstack([world - world.mean(axis=0) for world in figures if len(world)] or [np.zeros((0, 3))])
-    _, singular, vt = np.linalg.svd(centred, full_matrices=True)
+    # Only the right singular vectors are wanted: reduce the (M, 3) points
+    # to a 3 by 3 matrix with the same singular values and right vectors
+    # first (R of a QR; zero rows below 3 points). A full SVD of the points
+    # builds an M by M U: 2 GB at 16,000 points, out of memory at 10^4 per
+    # key of a 4-key sequence.
+    if len(centred) > 3:
+        centred = np.linalg.qr(centred, mode="r")
+    elif len(centred) < 3:
+        centred = np.vstack([centred, np.zeros((3 - len(centred), 3))])
+    _, singular, vt = np.linalg.svd(centred, full_matrices=False)
     largest = singular[0] if len(singular) else 0.0
     if largest == 0.0:
         # Every figure is a single point: any plane; take XY.

@@ -573,3 +573,21 @@ def test_result_name(source, target, expected):
     assert len(name.encode("utf-8")) <= core.MAX_RESULT_NAME_BYTES
     # With the helper's suffix it still fits Blender's 63-byte names.
     assert len((name + "_triangulation").encode("utf-8")) <= 63
+
+
+def test_fit_plane_of_many_points_matches_the_full_svd_and_stays_small():
+    """The plane of a large figure comes from the points reduced to 3 by 3 (QR), not from an
+    SVD of all of them, whose M by M U would not fit in memory at 10^4 vertices per key; the
+    normal is the full SVD's. Two points (fewer rows than coordinates) still give a plane."""
+    rng = np.random.default_rng(29)
+    tilt = np.linalg.qr(rng.normal(size=(3, 3)))[0]
+    flat = np.c_[rng.uniform(-1, 1, size=(400, 2)), 1e-3 * rng.normal(size=400)] @ tilt.T
+    plane = core.fit_plane(flat, flat + [0.5, 0, 0], "AUTO")
+    centred = np.vstack([flat - flat.mean(axis=0)] * 2)
+    expected = np.linalg.svd(centred, full_matrices=True)[2][2]
+    assert abs(abs(plane.normal @ expected) - 1) < 1e-12
+    big = np.c_[rng.uniform(-1, 1, size=(200_000, 2)), np.zeros(200_000)]
+    assert np.allclose(core.fit_plane(big, big, "AUTO").normal, [0, 0, 1], atol=1e-12)  # would need 320 GB
+    two = np.array([[0, 0, 0], [1, 0, 0.0]])
+    line_plane = core.fit_plane(two, two, "AUTO")  # collinear: a plane holding the line
+    assert abs(line_plane.normal @ [1, 0, 0]) < 1e-12 and np.linalg.norm(line_plane.normal) == pytest.approx(1)
