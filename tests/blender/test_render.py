@@ -93,3 +93,54 @@ def test_saved_file_renders_without_the_addon(scene, addon):
     # The figure moved: the two frames differ.
     assert ((images[0][..., 3] > 0.5) != (images[1][..., 3] > 0.5)).sum() > 50
     assert result.name in bpy.data.objects
+
+
+def test_tubes_render_in_full_and_play_light_in_the_viewport(scene, addon):
+    # Issue 29: a render evaluates the tubes at full quality (a 12-sided tube,
+    # a 12 x 6 UV sphere at every vertex: what they always rendered); the
+    # viewport's depsgraph, which playback evaluates, gets a 6-sided tube and
+    # 8 x 4 spheres only where a chain ends or branches. Counted exactly from
+    # the figure's vertex degrees: Mesh to Curve puts a degree-2 vertex on one
+    # spline and a vertex of degree d != 2 at the end of d splines.
+    from conftest import addon_import
+    baking = addon_import("baking")
+    source, target = make_pair("tree")
+    assert bpy.ops.object.stick_morph_bake(frame_count=5, frame_start=1) == {"FINISHED"}
+    result = bpy.context.view_layer.objects.active
+    degree = np.zeros(len(result.data.vertices), dtype=int)
+    for edge in result.data.edges:
+        degree[list(edge.vertices)] += 1
+    assert (degree == 2).any() and (degree >= 3).any() and (degree == 1).any()
+    spline_points = int(sum(d if d != 2 else 1 for d in degree))
+    joints = int((degree != 2).sum())
+
+    def sphere_vertices(segments, rings):
+        return segments * (rings - 1) + 2
+
+    render_expected = (baking.RENDER_PROFILE * spline_points
+                       + len(degree) * sphere_vertices(*baking.RENDER_SPHERE))
+    viewport_expected = (baking.VIEWPORT_PROFILE * spline_points
+                         + joints * sphere_vertices(*baking.VIEWPORT_SPHERE))
+
+    seen = []
+
+    def evaluated(scene_, depsgraph):  # frame_change_post gets the render's own depsgraph in a render
+        seen.append((depsgraph.mode, len(result.evaluated_get(depsgraph).data.vertices)))
+
+    scene.frame_set(3)
+    bpy.app.handlers.frame_change_post.append(evaluated)
+    try:
+        scene.frame_set(2)
+        scene.render.engine = "BLENDER_WORKBENCH"
+        scene.render.resolution_x, scene.render.resolution_y = 64, 48
+        with tempfile.TemporaryDirectory(prefix="stickmorph-render-") as tmp:
+            camera = bpy.data.objects.new("Camera", bpy.data.cameras.new("Camera"))
+            scene.collection.objects.link(camera)
+            scene.camera = camera
+            scene.render.filepath = os.path.join(tmp, "frame")
+            bpy.ops.render.render()
+    finally:
+        bpy.app.handlers.frame_change_post.remove(evaluated)
+    assert ("VIEWPORT", viewport_expected) in seen, seen
+    assert ("RENDER", render_expected) in seen, seen
+    assert {mode for mode, _ in seen} == {"VIEWPORT", "RENDER"}, seen
