@@ -5,6 +5,7 @@ core.py's docstring has the geometry of the way back to world space."""
 from __future__ import annotations
 
 import math
+import time
 from dataclasses import dataclass, field
 from typing import Callable
 
@@ -79,6 +80,9 @@ class MorphResult:
     # compatible with the source (they self-intersect or fold over). Empty
     # for RIGID and BARYCENTRIC, whose every frame is verified exactly.
     invalid_frames: list = field(default_factory=list)
+    # Wall time of the engine's call (the module's morph, which releases the
+    # GIL): the bake's time is this and the Blender side (issue 29's split).
+    engine_ms: float = 0.0
 
 
 def refuse_faces(name: str, faces: int) -> None:
@@ -279,11 +283,13 @@ def compute_morph(prepared: PreparedPair, settings: BakeSettings) -> MorphResult
                       verify=True, rotation=rotation.lower(), turns=turns, easing=RIGID_EASINGS[easing])
     applies = option_methods()
     options = {name: value for name, value in candidates.items() if option_applies(name, motion, applies)}
+    started = time.perf_counter()
     try:
         result = engine.morph(prepared.source_xy, prepared.target_xy, prepared.edges, frames=m,
                               method=motion.lower(), **options)
     except (engine.StickMorphError, engine.InternalError) as e:
         raise StickMorphError(engine_error_message(e, prepared.source_name, prepared.target_name)) from e
+    engine_ms = (time.perf_counter() - started) * 1000.0
     indices = ease_sample_indices(frame_count, easing, motion)
     frames_xy = np.asarray(result["frames"])[indices]
     if motion == "RIGID":
@@ -300,7 +306,7 @@ def compute_morph(prepared: PreparedPair, settings: BakeSettings) -> MorphResult
     if motion == "LINEAR":
         bad = set(int(k) for k in stats.get("invalid_frames", ()))
         invalid = [k for k, index in enumerate(indices.tolist()) if index in bad]
-    return MorphResult(frames_world, result["triangulation"], stats, motion, invalid)
+    return MorphResult(frames_world, result["triangulation"], stats, motion, invalid, engine_ms)
 
 
 def motion_summary(morph: MorphResult, frame_start: int = 1) -> tuple[str, str]:
