@@ -291,7 +291,9 @@ def compute_morph(prepared: PreparedPair, settings: BakeSettings) -> MorphResult
         raise StickMorphError(engine_error_message(e, prepared.source_name, prepared.target_name)) from e
     engine_ms = (time.perf_counter() - started) * 1000.0
     indices = ease_sample_indices(frame_count, easing, motion)
-    frames_xy = np.asarray(result["frames"])[indices]
+    frames_xy = np.asarray(result["frames"])
+    if len(indices) != len(frames_xy) or np.any(indices != np.arange(len(frames_xy))):
+        frames_xy = frames_xy[indices]  # a copy: only when easing picks frames
     if motion == "RIGID":
         # The engine's times are k / (N - 1); the figure is at the eased
         # fraction of its motion, and so is its height.

@@ -126,8 +126,13 @@ def unproject(xy: np.ndarray, heights: np.ndarray, plane: Plane) -> np.ndarray:
     """World points from in-plane coordinates (..., V, 2) and heights (..., V)."""
     xy = np.asarray(xy, dtype=np.float64)
     heights = np.asarray(heights, dtype=np.float64)
-    return (plane.origin + xy[..., 0:1] * plane.u + xy[..., 1:2] * plane.v
-            + heights[..., None] * plane.normal)
+    # One output written in place: a bake's frames are (250, 10^4, 3) and
+    # more, and the plain broadcast sum made four temporaries of that size
+    # (0.7 s of a 4.2 s bake at 10^4 vertices and 250 frames, issue 29).
+    out = np.matmul(xy, np.stack([plane.u, plane.v]))
+    out += heights[..., None] * plane.normal
+    out += plane.origin
+    return out
 
 
 def planarity_deviation(heights: np.ndarray) -> tuple[float, int]:
