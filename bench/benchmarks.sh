@@ -31,6 +31,11 @@
 #   sequences.json      bench/sequence_motion.py on it (issue 28): the sequence
 #                       morph against chained pair morphs and straight-line
 #                       (shape-key) blending, and keys drawn separately
+#   blender.json        bench/blender_bake.py (issue 29): the bake and playback
+#                       in headless Blender at 10^3, 10^4 and 10^5 vertices,
+#                       with the add-on package built from the measured commit
+#                       (build-bench/addon, build-bench/dist); skipped, and the
+#                       report says so, when no blender is on PATH
 #   run.json            machine, date, commit, command, runtime
 # and then bench/make_benchmarks.py (Debian's /usr/bin/python3 with
 # python3-matplotlib) writes BENCHMARKS.md and the SVG plots from those files.
@@ -51,10 +56,11 @@ scrub_large_frames=24
 # (polygon, spiral, thinned, rings) cost more than the exact ones, and the
 # 60 frames per second are asked of any 10^4-vertex figure.
 scrub_families=polyline,spiral,polygon,tree,triangulation,thinned,rings
+blender_sizes=1000,10000,100000
 working_tree=0
 for argument in "$@"; do
   case "$argument" in
-    --quick) sizes=10,30,100,300; scrub_sizes=1000; scrub_frames=60; scrub_large= ;;
+    --quick) sizes=10,30,100,300; scrub_sizes=1000; scrub_frames=60; scrub_large= ; blender_sizes=1000 ;;
     --working-tree) working_tree=1 ;;
     *) echo "usage: bash bench/benchmarks.sh [--quick] [--working-tree]" >&2; exit 2 ;;
   esac
@@ -111,7 +117,7 @@ cmake --build "$build" -j2 --target stickmorph_benchmark stickmorph_benchmark_mo
 
 mkdir -p "$data"
 rm -rf "$data/polygon_pairs.json" "$data/morph.jsonl" "$data/correspondence.json" "$data/motion.json" \
-  "$data/scrub.jsonl" "$data/scrub_large.jsonl" "$data/run.json" "$data/sequences.json" "$data/key_pose_corpus"
+  "$data/scrub.jsonl" "$data/scrub_large.jsonl" "$data/run.json" "$data/sequences.json" "$data/key_pose_corpus" "$data/blender.json"
 
 echo "==== polygon-pair corpus (tests/data/polygon_pairs) ===="
 "$build/stickmorph_benchmark" --json "$data/polygon_pairs.json" "$source_dir/tests/data/polygon_pairs" \
@@ -169,6 +175,20 @@ tail -1 "$data/key_pose_corpus.log"
 /usr/bin/python3 bench/sequence_motion.py "$data/key_pose_corpus" --build-dir "$build" \
   --json "$data/sequences.json" > "$data/sequences.md"
 sed -n '/^medians/,$p' "$data/sequences.md"
+
+if command -v "${BLENDER:-blender}" >/dev/null; then
+  echo "==== Blender (issue 29: bench/blender_bake.py, sizes $blender_sizes; progress below) ===="
+  # The package of the measured commit, for the Blender on PATH (its module
+  # built for Blender's Python, which also draws the pairs here).
+  /usr/bin/python3 "$source_dir/build_addon.py" --blender "${BLENDER:-blender}" --build-dir build-bench/addon \
+    --dist build-bench/dist > "$data/blender_build.log" 2>&1 || { tail -20 "$data/blender_build.log" >&2; exit 1; }
+  /usr/bin/python3 bench/blender_bake.py --cli "$build/stickmorph" --module build-bench/addon/python \
+    --dist build-bench/dist --sizes "$blender_sizes" --json "$data/blender.json" > "$data/blender.md" \
+    || echo "bench/blender_bake.py: some cases failed; their rows in BENCHMARKS.md say why"
+  cat "$data/blender.md"
+else
+  echo "==== Blender: not measured (no blender on PATH) ===="
+fi
 
 runtime=$(( $(date +%s) - start ))
 cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)

@@ -12,6 +12,8 @@ Input (written by bench/benchmarks.sh under out/benchmarks/):
                       correspondence against size (optional, likewise)
   scrub.jsonl         stickmorph_benchmark_scrub --json: frames per second of
                       the stateful solvers (issue 15; optional, likewise)
+  blender.json        bench/blender_bake.py --json: the bake and playback in
+                      headless Blender (issue 29; optional, likewise)
 
 Output: BENCHMARKS.md and docs/benchmarks/*.svg. Every number in them comes
 from the input files; the text around them only explains. Runs with Debian's
@@ -27,6 +29,7 @@ import sys
 # the names below are re-exported for tests/python/test_make_benchmarks_*.py.
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
+from benchmarks_md.blender import blender_headline, blender_section, read_blender  # noqa: E402,F401
 from benchmarks_md.common import (STAGES, Cell, InputError, fit_exponent, index_cells,  # noqa: E402,F401
                                   read_inputs, read_scrub)
 from benchmarks_md.correspondence import (correspondence_requirement, correspondence_section,  # noqa: E402,F401
@@ -51,8 +54,9 @@ def main():
         correspondence = read_correspondence(args.data)
         scrub = read_scrub(args.data)
         sequences = read_sequences(args.data)
+        blender = read_blender(args.data)
         write_report(records, polygon_pairs, run, args.output, args.plots, motion, correspondence, scrub,
-                     sequences)
+                     sequences, blender)
     except (InputError, KeyError) as error:
         print(f"error: make_benchmarks: incomplete benchmark data: {error}", file=sys.stderr)
         return 2

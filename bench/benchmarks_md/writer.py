@@ -7,6 +7,7 @@ from .common import (COLORS, DASHES, FIT_MIN_N, METHODS, fmt_int, fmt_ms, fmt_ra
                      loglog_svg, table)
 from .correspondence import correspondence_section
 from .motion import motion_section, motion_targets_met
+from .blender import blender_headline, blender_section
 from .sequences import sequences_headline, sequences_section
 from .speed import frame_cost_section, scrub_section, speed_headline
 from .stages import stages_section
@@ -14,19 +15,20 @@ from .steiner import polygon_pairs_section, steiner_section
 
 
 def write_report(records, polygon_pairs, run, out_path, plot_dir, motion=None, correspondence=None, scrub=None,
-                 sequences=None):
+                 sequences=None, blender=None):
     cells, families, sizes = index_cells(records)
     os.makedirs(plot_dir, exist_ok=True)
     plot_rel = os.path.relpath(plot_dir, os.path.dirname(os.path.abspath(out_path)))
     md = []
 
     md += header_section(run)
-    md += headline_section(cells, families, sizes, run, motion, scrub, sequences)
+    md += headline_section(cells, families, sizes, run, motion, scrub, sequences, blender)
     md += corpus_section(cells, families, sizes)
     md += steiner_section(cells, families, sizes, run, plot_dir, plot_rel)
     md += stages_section(cells, families, sizes, run, plot_dir, plot_rel)
     md += frame_cost_section(cells, families, sizes)
     md += scrub_section(scrub)
+    md += blender_section(blender)
     md += memory_section(cells, families, sizes, plot_dir, plot_rel)
     md += linear_morph_section(cells, families, sizes, run)
     md += polygon_pairs_section(polygon_pairs)
@@ -69,7 +71,7 @@ def header_section(run):
     return md
 
 
-def headline_section(cells, families, sizes, run, motion, scrub, sequences=None):
+def headline_section(cells, families, sizes, run, motion, scrub, sequences=None, blender=None):
     """The headline: one line per claim."""
     md = []
     add = md.append
@@ -120,6 +122,8 @@ def headline_section(cells, families, sizes, run, motion, scrub, sequences=None)
                         + ", ".join(f"{m} {met[m]}" for m in motion["methods"]) + ".")
     if sequences is not None:
         headline.append(sequences_headline(sequences))
+    if blender is not None:
+        headline.append(blender_headline(blender))
     add("\n".join(f"- {h}" for h in headline) + "\n")
     return md
 
