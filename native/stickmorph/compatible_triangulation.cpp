@@ -13,6 +13,7 @@
 
 #include <algorithm>
 
+#include "stickmorph/cancellation.h"
 #include "stickmorph/internal/compatible_mesh.h"
 #include "stickmorph/internal/geometry.h"
 #include "stickmorph/internal/piecewise_triangulation.h"
@@ -93,6 +94,7 @@ CompatibleTriangulation compatible_triangulation_once(const PolygonPair& pair,
           ? internal::piecewise_mesh(pair, source_base, target_base, options, local.spiderweb_steiner_vertices,
                                      &routed_cuts)
           : internal::spiderweb_mesh(pair, source_base, target_base, options, local.spiderweb_steiner_vertices);
+  poll_cancellation();  // between the long steps (cancellation.h); the steps poll inside too
   local.min_angle_before_smoothing = internal::mesh_min_angle(mesh);
   internal::smooth(mesh, false, options.smoothing_rounds);
   internal::smooth(mesh, true, options.smoothing_rounds);
@@ -104,6 +106,7 @@ CompatibleTriangulation compatible_triangulation_once(const PolygonPair& pair,
   result.target_steiner.assign(mesh.target.begin() + n, mesh.target.end());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     if (mesh.alive.empty() || mesh.alive[t]) result.triangles.push_back(mesh.triangles[t]);
+  poll_cancellation();
   verify_compatible_triangulation(pair, result, options.label);
   local.steiner_vertices = result.steiner_count();
   if (stats) *stats = local;

@@ -4,7 +4,8 @@
 // message names what is wrong and where (vertex indices, edge indices, faces).
 // The CLI prints `error: <what()>` and exits 2; the Python module maps each
 // class onto a `ValueError` subclass with the same message (FileError also
-// onto OSError, InternalError onto RuntimeError), and carries the fields
+// onto OSError, InternalError onto RuntimeError, CancelledError onto its own
+// class outside ValueError), and carries the fields
 // below as attributes.
 #pragma once
 
@@ -134,6 +135,14 @@ class NumericRangeError : public Error {
 /// A result failed exact verification and could not be repaired: the engine
 /// refuses to return it. The message names the face and the triangle.
 class VerificationError : public Error {
+ public:
+  using Error::Error;
+};
+
+/// The caller cancelled the call (Progress::cancel, cancellation.h): the
+/// engine stopped at its next check and returns nothing. Not the input's
+/// fault and not a bug; the message names the stage it stopped in.
+class CancelledError : public Error {
  public:
   using Error::Error;
 };

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "stickmorph/argument_limits.h"
+#include "stickmorph/cancellation.h"
 #include "stickmorph/compatibility.h"
 #include "stickmorph/decomposition.h"
 #include "stickmorph/exact_predicates.h"
@@ -169,9 +170,15 @@ FigureTriangulation triangulate_at_scale(const CompatiblePair& pair, const Figur
   // the face on the left, counter-clockwise, as section 4 expects.
   stage_start = Clock::now();
   int face = 0, interior = 0;
+  long interior_total = 0;
+  for (const CyclicSequence& seq : source_dec.sequences) interior_total += seq.exterior ? 0 : 1;
   for (const CyclicSequence& seq : source_dec.sequences) {
     ++face;
     if (seq.exterior) continue;
+    // A figure of many faces (a triangulation of 10^5 vertices): counted
+    // and cancellable face by face. (A large face counts its own corners
+    // instead, piecewise_triangulation.cpp.)
+    report_progress(interior, interior_total);
     ++interior;
     PolygonPair pair;
     pair.corners = seq.vertices;
@@ -210,6 +217,7 @@ FigureTriangulation triangulate_at_scale(const CompatiblePair& pair, const Figur
 
   // Steiner vertices follow the figure and the enclosure.
   result.steiner_vertices = int(result.source.size()) - n - k;
+  poll_cancellation();
   stage_start = Clock::now();
   verify_figure_triangulation(result, source);
   measured.verify_ms = ms_since(stage_start);

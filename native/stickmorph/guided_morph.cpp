@@ -11,6 +11,7 @@
 #include <optional>
 #include <utility>
 
+#include "stickmorph/cancellation.h"
 #include "stickmorph/errors.h"
 #include "stickmorph/exact_predicates.h"
 #include "stickmorph/frame_certificate.h"
@@ -521,6 +522,7 @@ MorphResult guided_morph(GuidedMorph& morph, int frames, bool verify, GuidedMorp
   for (int f = 0; f < frames; ++f) result.times[f] = double(f) / double(frames - 1);
   int exact = 0, blended = 0, barycentric = 0, refined = 0;
   for (int f = 0; f < frames; ++f) {
+    report_progress(f, frames);  // a caller's cancel stops here, between frames (cancellation.h)
     GuidedFrame frame = morph.frame(result.times[f], f, verify, "morph: ", check);
     if (f > 0 && f < frames - 1) {
       if (frame.fit == GuideFit::Exact) ++exact;

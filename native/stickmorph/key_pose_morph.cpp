@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "stickmorph/argument_limits.h"
+#include "stickmorph/cancellation.h"
 #include "stickmorph/compatibility.h"
 #include "stickmorph/decomposition.h"
 #include "stickmorph/errors.h"
@@ -163,6 +164,7 @@ KeyPoseMorphSolver::KeyPoseMorphSolver(const std::vector<StickFigure>& input_key
   check_key_pose_options(options, input_keys.size());
   State& st = *state_;
   if (options.correspond == CorrespondenceMode::Auto) {
+    report_stage("correspond");
     KeyPoseCorrespondenceOptions matching;
     matching.pins = options.pins;
     st.correspondence = correspond_key_poses(input_keys, matching);
@@ -171,6 +173,7 @@ KeyPoseMorphSolver::KeyPoseMorphSolver(const std::vector<StickFigure>& input_key
     st.keys = input_keys;
   }
   const std::vector<StickFigure>& keys = st.keys;
+  report_stage("check");
   check_same_graph(keys);
   const std::size_t count = keys.size();
   const std::size_t segments = options.loop ? count : count - 1;
@@ -191,9 +194,13 @@ KeyPoseMorphSolver::KeyPoseMorphSolver(const std::vector<StickFigure>& input_key
   // Algorithm 1 once per key; each segment's pair checked (the keys must be
   // compatible from one to the next, which makes them all compatible).
   st.decompositions.reserve(count);
-  for (const StickFigure& key : keys) st.decompositions.push_back(decompose(key));
+  for (const StickFigure& key : keys) {
+    poll_cancellation();
+    st.decompositions.push_back(decompose(key));
+  }
   st.pairs.reserve(segments);  // never reallocated: the morphs are made from them
   for (std::size_t s = 0; s < segments; ++s) {
+    poll_cancellation();
     const std::size_t next = (s + 1) % count;
     check_numeric_range(keys[s], keys[next], MorphMethod::Rigid);
     try {
@@ -230,7 +237,11 @@ KeyPoseMorphSolver::KeyPoseMorphSolver(const std::vector<StickFigure>& input_key
   const WeightKind weights = options.weights.value_or(WeightKind::MeanValue);
   st.verify = options.verify.value_or(true);
   st.check = options.frame_check.value_or(FrameCheck::Certificate);
+  // Not counted in segments: each segment's triangulation counts its own
+  // steps (figure_triangulation.cpp), and two counts would fight.
+  report_stage("triangulate");
   for (std::size_t s = 0; s < segments; ++s) {
+    poll_cancellation();
     const std::size_t next = (s + 1) % count;
     KeyPoseSegment segment;
     segment.from_key = int(s);
@@ -332,7 +343,12 @@ KeyPoseMorphResult morph_key_poses(const std::vector<StickFigure>& keys, const K
   result.times.resize(std::size_t(frames));
   for (int f = 0; f < frames; ++f) result.times[std::size_t(f)] = double(f) / double(frames - 1);
   result.frames.reserve(std::size_t(frames));
-  for (int f = 0; f < frames; ++f) result.frames.push_back(solver.frame(f));
+  report_stage("frames", frames);
+  for (int f = 0; f < frames; ++f) {
+    report_progress(f, frames);  // and a caller's cancel stops here, between frames
+    result.frames.push_back(solver.frame(f));
+  }
+  report_progress(frames, frames);
   // Every key exactly at its frame: the segments' end frames are their
   // pairs' figures (GuidedMorph), so this holds by construction; a
   // mismatch is a bug, not a user's error.

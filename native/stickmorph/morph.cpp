@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "stickmorph/argument_limits.h"
+#include "stickmorph/cancellation.h"
 #include "stickmorph/decomposition.h"
 #include "stickmorph/frame_verification.h"
 #include "stickmorph/internal/barycentric_weights.h"
@@ -201,6 +202,7 @@ MorphResult morph_triangulation(const FigureTriangulation& triangulation, const 
 
   result.frames.reserve(options.frames);
   for (int f = 0; f < options.frames; ++f) {
+    report_progress(f, options.frames);  // and a caller's cancel stops here, between frames
     CheckedFrame frame =
         checked_morph_frame(solver, triangulation, source, source_decomposition, result.times[f], f, options.verify,
                             "morph: ", options.frame_check);
@@ -208,6 +210,7 @@ MorphResult morph_triangulation(const FigureTriangulation& triangulation, const 
     if (frame.refined) ++result.stats.refined_frames;
     result.frames.push_back(std::move(frame.positions));
   }
+  report_progress(options.frames, options.frames);
   result.stats.factorize_ms = setup_ms + solver.stats().factorize_ms;
   result.stats.solve_ms = solver.stats().solve_ms;
   result.stats.factorizations = solver.stats().factorizations;
@@ -249,8 +252,11 @@ MorphResult linear_morph(const StickFigure& source, const StickFigure& target, i
     invalid_frames->clear();
     const Decomposition own = source_decomposition ? Decomposition{} : decompose(source);
     const Decomposition& decomposition = source_decomposition ? *source_decomposition : own;
-    for (int f = 0; f < frames; ++f)
+    for (int f = 0; f < frames; ++f) {
+      report_progress(f, frames);  // the exact check is this morph's long part
       if (!is_frame_valid(source, decomposition, result.frames[f])) invalid_frames->push_back(f);
+    }
+    report_progress(frames, frames);
     result.stats.verify_ms = ms_since(start);
   }
   return result;

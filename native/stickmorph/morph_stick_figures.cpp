@@ -9,6 +9,7 @@
 #include <optional>
 #include <utility>
 
+#include "stickmorph/cancellation.h"
 #include "stickmorph/compatibility.h"
 #include "stickmorph/errors.h"
 #include "stickmorph/internal/rigid_morph_setup.h"
@@ -44,8 +45,12 @@ void morph_rigidly(const CompatiblePair& pair, const MorphStickFiguresOptions& o
                    MorphStickFiguresResult& result) {
   MorphStickFiguresStats& stats = result.stats;
   const StickFigure& source = pair.source();
+  // The triangulation and the solver's set-up on it are one stage here:
+  // internal::prepare_guided_morph does both, with its fallbacks.
+  report_stage("triangulate");
   GuidedMorph morph = prepare_rigid_morph_checked(pair, options, result.triangulation_options,
                                                   result.morph_options.weights, stats);
+  report_stage("frames", result.morph_options.frames);
   GuidedMorphStats guided;
   const auto start = std::chrono::steady_clock::now();
   MorphResult morphed;
@@ -56,6 +61,7 @@ void morph_rigidly(const CompatiblePair& pair, const MorphStickFiguresOptions& o
     throw InternalError(std::string("morph_stick_figures: the engine refused its own intermediate result: ") +
                         error.what());
   }
+  report_progress(result.morph_options.frames, result.morph_options.frames);
   stats.morph_ms = stats.factorize_ms + milliseconds_since(start);
   stats.solve_ms = morphed.stats.solve_ms;
   stats.verify_ms = morphed.stats.verify_ms;
@@ -145,9 +151,11 @@ MorphStickFiguresResult morph_at_scale(const CompatiblePair& pair, const MorphSt
   FigureTriangulation triangulation;
   MorphResult morphed;
   try {
+    report_stage("triangulate");
     auto start = std::chrono::steady_clock::now();
     triangulation = triangulate_figures(pair, result.triangulation_options, &stats.triangulation);
     stats.triangulate_ms = milliseconds_since(start);
+    report_stage("frames", result.morph_options.frames);
     start = std::chrono::steady_clock::now();
     morphed = morph_triangulation(triangulation, source, pair.source_decomposition(), result.morph_options);
     stats.morph_ms = milliseconds_since(start);
@@ -195,6 +203,7 @@ MorphStickFiguresResult morph_corresponding(const CompatiblePair& pair, const Mo
     // reported, not refused.
     MorphStickFiguresResult result = initial_result(pair, options);
     MorphStickFiguresStats& stats = result.stats;
+    report_stage("frames", result.morph_options.frames);
     const auto start = std::chrono::steady_clock::now();
     MorphResult linear = linear_morph(source, target, result.morph_options.frames, &stats.invalid_frames,
                                       &pair.source_decomposition());
@@ -218,8 +227,10 @@ MorphStickFiguresResult morph_corresponding(const CompatiblePair& pair, const Mo
 MorphStickFiguresResult morph_stick_figures(const StickFigure& source, const StickFigure& target,
                                             const MorphStickFiguresOptions& options) {
   check_morph_options(options);
+  report_stage("check");
   if (options.correspond == CorrespondenceMode::ByIndex)
     return morph_corresponding(CompatiblePair::check(source, target), options);
+  report_stage("correspond");
   CorrespondenceOptions matching;
   matching.pins = options.pins;
   FigureCorrespondence correspondence = correspond_figures(source, target, matching);

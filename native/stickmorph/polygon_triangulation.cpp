@@ -10,6 +10,7 @@
 #include <queue>
 #include <set>
 
+#include "stickmorph/cancellation.h"
 #include "stickmorph/exact_predicates.h"
 #include "stickmorph/internal/triangle_adjacency.h"
 
@@ -76,8 +77,12 @@ std::vector<std::array<int, 3>> triangulate_polygon(const CornerPolygon& polygon
 
   Cdt cdt;
   std::map<int, VertexHandle> handle;  // vertex id -> CDT vertex
+  // The constrained Delaunay triangulation of a 2 * 10^5-corner exterior
+  // face (a 10^5-vertex polyline) takes tens of seconds: cancellable
+  // (cancellation.h) vertex by vertex and constraint by constraint.
   for (int id : polygon.corners)
     if (!handle.count(id)) {
+      poll_cancellation();
       const Vec2& p = polygon.positions[id];
       const std::size_t before = cdt.number_of_vertices();
       VertexHandle v = cdt.insert(Kernel::Point_2(p[0], p[1]));
@@ -93,6 +98,7 @@ std::vector<std::array<int, 3>> triangulate_polygon(const CornerPolygon& polygon
     // constraint: inserting it twice would count as an overlap.
     std::set<std::pair<int, int>> inserted;
     for (int k = 0; k < n; ++k) {
+      poll_cancellation();
       const int a = polygon.corners[k], b = polygon.corners[(k + 1) % n];
       if (a == b) reject(FigureDefect::CoincidentCorners, "corner " + std::to_string(k) + " repeats its successor", {a});
       if (inserted.emplace(std::min(a, b), std::max(a, b)).second) cdt.insert_constraint(handle[a], handle[b]);

@@ -5,6 +5,7 @@
 #include <set>
 #include <utility>
 
+#include "stickmorph/cancellation.h"
 #include "stickmorph/internal/routed_cut.h"
 #include "stickmorph/internal/shared_diagonals.h"
 #include "stickmorph/internal/spiderweb_triangulation.h"
@@ -12,6 +13,22 @@
 
 namespace stickmorph::internal {
 namespace {
+
+// How deep piecewise_mesh is in its own recursion on this thread: the
+// outermost call of a large pair reports its pieces' corners as the
+// stage's progress (cancellation.h), the recursion into them does not (it
+// would restart the count), nor does a small pair (a figure of many small
+// faces counts faces instead, figure_triangulation.cpp). Thread-local, as
+// the Progress it reports to.
+thread_local int t_piecewise_depth = 0;
+constexpr int kCountedCorners = 1000;
+struct PiecewiseDepth {
+  PiecewiseDepth() { ++t_piecewise_depth; }
+  ~PiecewiseDepth() { --t_piecewise_depth; }
+  PiecewiseDepth(const PiecewiseDepth&) = delete;
+  PiecewiseDepth& operator=(const PiecewiseDepth&) = delete;
+  bool outermost() const { return t_piecewise_depth == 1; }
+};
 
 // A pair is considered for a routed cut (routed_cut.h) when its spiderweb
 // would give the corners more than kDeepAverage Steiner vertices each on
@@ -148,6 +165,7 @@ CompatibleMesh piecewise_mesh(const PolygonPair& pair, const std::vector<std::ar
                               const std::vector<std::array<int, 3>>& target_base,
                               const CompatibleTriangulationOptions& options, int& spiderweb_steiner,
                               int* routed_cuts_taken) {
+  const PiecewiseDepth depth;
   const int n = int(pair.corners.size());
   CompatibleMesh mesh;
   mesh.corners = n;
@@ -222,7 +240,20 @@ CompatibleMesh piecewise_mesh(const PolygonPair& pair, const std::vector<std::ar
       }
     }
   }
-  for (const std::vector<int>& cycle : pieces_of(*cut_base, cuts)) {
+  // At 10^5 corners this loop is nearly all of a morph's triangulation
+  // (a polyline's exterior face cut into 10^5 pieces): it polls for
+  // cancellation on every piece, and the outermost call counts corners
+  // glued against all its pieces' corners, real progress if not even time.
+  const std::vector<std::vector<int>> pieces = pieces_of(*cut_base, cuts);
+  long corners_total = 0, corners_done = 0;
+  for (const std::vector<int>& cycle : pieces) corners_total += long(cycle.size());
+  const bool counted = depth.outermost() && n >= kCountedCorners;
+  for (const std::vector<int>& cycle : pieces) {
+    if (counted)
+      report_progress(corners_done, corners_total);
+    else
+      poll_cancellation();
+    corners_done += long(cycle.size());
     PolygonPair sub;
     for (int k : cycle) sub.corners.push_back(pair.corners[k]);
     sub.source_positions = pair.source_positions;
@@ -240,6 +271,7 @@ CompatibleMesh piecewise_mesh(const PolygonPair& pair, const std::vector<std::ar
     // Corners of the piece are corners of the pair; its Steiner vertices are new.
     glue_piece(piece, cycle, mesh);
   }
+  if (counted) report_progress(corners_total, corners_total);
   mesh.alive.assign(mesh.triangles.size(), 1);
   return mesh;
 }

@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 
+#include "stickmorph/cancellation.h"
 #include "stickmorph/exact_predicates.h"
 #include "stickmorph/internal/geometry.h"
 #include "stickmorph/internal/triangle_adjacency.h"
@@ -49,7 +50,10 @@ std::set<std::pair<int, int>> common_diagonals(const PolygonPair& pair, const st
   };
   std::vector<Segment> diagonals, edges;
   std::vector<char> ok(candidates.size(), 0);
+  // Exact tests on every candidate and every overlapping pair: seconds on
+  // a 10^5-vertex figure's exterior face, so cancellable (cancellation.h).
   for (std::size_t i = 0; i < candidates.size(); ++i) {
+    poll_cancellation();
     const auto [a, b] = candidates[i];
     ok[i] = target.corners[a] != target.corners[b] && enters(a, b) && enters(b, a);
     diagonals.push_back({target.at(a), target.at(b)});
@@ -58,6 +62,7 @@ std::set<std::pair<int, int>> common_diagonals(const PolygonPair& pair, const st
   // ... and meets no edge of the target except at its own ends.
   for (const auto& [i, e] : overlapping_boxes(diagonals, edges)) {
     if (!ok[i]) continue;
+    poll_cancellation();
     const auto [a, b] = candidates[i];
     const int va = pair.corners[a], vb = pair.corners[b];
     const int ea = pair.corners[e], eb = pair.corners[(e + 1) % n];

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <set>
 
+#include "stickmorph/cancellation.h"
 #include "stickmorph/internal/geometry.h"
 
 namespace stickmorph::internal {
@@ -19,7 +20,8 @@ void smooth(CompatibleMesh& mesh, bool target, int rounds) {
     }
     return m;
   };
-  for (int round = 0; round < rounds; ++round)
+  for (int round = 0; round < rounds; ++round) {
+    poll_cancellation();  // a round is O(Steiner vertices): cancellable between rounds
     for (int v = mesh.corners; v < int(pos.size()); ++v) {
       std::set<int> neighbours;
       for (int t : around[v])
@@ -40,6 +42,7 @@ void smooth(CompatibleMesh& mesh, bool target, int rounds) {
         pos[v] = old;
       }
     }
+  }
 }
 
 }  // namespace stickmorph::internal

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "stickmorph/cancellation.h"
 #include "stickmorph/internal/spiderweb.h"
 #include "stickmorph/internal/spiderweb_embedding.h"
 #include "stickmorph/internal/steiner_reduction.h"
@@ -57,8 +58,10 @@ CompatibleMesh spiderweb_mesh(const PolygonPair& pair, const std::vector<std::ar
   }
   enforce_tip_levels(pair, level);
 
+  poll_cancellation();  // between the long steps (cancellation.h)
   const Spiderweb web = build_spiderweb(level, pair.corners);
   const Placement placement = embed_in_both(pair, pts, web);
+  poll_cancellation();
   if (!placement.ok)
     throw VerificationError(options.label + ": no valid embedding of the spiderweb was found in both polygons (" +
                             std::to_string(n) + " corners, method " + steiner_method_name(options.method) +

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "stickmorph/cancellation.h"
 #include "stickmorph/internal/geometry.h"
 
 namespace stickmorph::internal {
@@ -49,6 +50,7 @@ int remove_redundant_steiner(const PolygonPair& pair, CompatibleMesh& mesh, cons
     // Newest Steiner vertices first: redundant levels sit at path tops.
     for (int v = nodes - 1; v >= mesh.corners; --v) {
       if (removed[v] || !dirty[v]) continue;
+      poll_cancellation();  // each try re-triangulates a link, up to O(d^3)
       std::vector<int> star;
       for (int t : around[v])
         if (mesh.alive[t]) star.push_back(t);
