@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bindings.h"
+#include "progress_argument.h"
 #include "conversions.h"
 #include "morph_arguments.h"
 #include "stickmorph/argument_limits.h"
@@ -189,16 +190,19 @@ void bind_key_poses(py::module_& m) {
          const py::object& loop, const py::object& hold, const py::object& rotation, const py::object& turns,
          const py::object& steiner, const py::object& weights, const py::object& enclosure_sides,
          const py::object& verify, const py::object& frame_check, const py::object& correspond,
-         const py::object& pins, const py::object& easing) {
+         const py::object& pins, const py::object& easing, const py::object& progress) {
         KeyPoseInputs inputs = key_pose_inputs(keys_xy, edges, frames, keys_at, loop, hold, rotation, turns, steiner,
                                                weights, enclosure_sides, verify, frame_check, correspond, pins,
                                                easing);
         const std::vector<sm::StickFigure>& keys = inputs.keys;
         const sm::KeyPoseMorphOptions& options = inputs.options;
+        std::shared_ptr<sm::Progress> watched = to_progress(progress);
         sm::KeyPoseMorphResult result;
         {
           py::gil_scoped_release release;
+          CallProgress installed(std::move(watched));
           result = sm::morph_key_poses(keys, options);
+          installed.finished();
         }
         // Matched keys: the frames are the common figure's.
         const sm::StickFigure& figure = result.correspondence ? result.correspondence->keys[0] : keys[0];
@@ -220,6 +224,7 @@ void bind_key_poses(py::module_& m) {
       py::arg("turns") = py::none(), py::arg("steiner") = py::none(), py::arg("weights") = py::none(),
       py::arg("enclosure_sides") = py::none(), py::arg("verify") = py::none(), py::arg("frame_check") = py::none(),
       py::arg("correspond") = py::none(), py::arg("pins") = py::none(), py::arg("easing") = py::none(),
+      py::arg("progress") = py::none(),
       R"doc(Morphs a stick figure through a sequence of key poses (issue 28): one continuous,
 valid motion that shows key k exactly at frame keys_at[k], its velocity continuous through
 every key (unless hold stops it there). The same computation as
@@ -248,6 +253,9 @@ Args:
     and every key vertex is a vertex of every frame.
   pins: with correspond="auto", #P by 2 (vertex of key 1, vertex of key 2) pairs, or a
     sequence of K - 1 such lists, list k for keys k and k + 1 in their own numbering.
+  progress: optional stickmorph.Progress to watch and cancel the call from another thread
+    (stages "correspond", "check", "triangulate" once per segment, "frames" counted in
+    frames); None: the one a `with progress:` block installed on this thread, if any.
 
 Returns:
   dict with "frames" (N by #V by 2 float64; frames[keys_at[k]] is key k exactly), "times"
@@ -267,6 +275,7 @@ Raises:
   IncompatibleFiguresError: two consecutive keys are not compatible, or with correspond="auto"
     cannot be matched ("key 2 and key 3: ...").
   NumericRangeError, VerificationError: as morph().
+  CancelledError: progress.cancel() was called; nothing is returned.
 )doc");
 
   // The stateful form, for scrubbing: set up once, then any frame or time.
@@ -274,25 +283,30 @@ Raises:
 (keys matched and checked, the guide and every segment's triangulation and factorizations), then
 any frame of the sequence or the figure at any time, each verified: for scrubbing a timeline.
 Takes morph_key_poses()'s arguments; solver.frame(f) is morph_key_poses(...)["frames"][f]
-bit for bit, in any order.)doc")
+bit for bit, in any order. progress= as for morph_key_poses() (its set-up is the long part:
+stages "correspond", "check" and "triangulate").)doc")
       .def(py::init([](const py::object& keys_xy, const py::object& edges, const py::object& frames,
                        const py::object& keys_at, const py::object& loop, const py::object& hold,
                        const py::object& rotation, const py::object& turns, const py::object& steiner,
                        const py::object& weights, const py::object& enclosure_sides, const py::object& verify,
                        const py::object& frame_check, const py::object& correspond, const py::object& pins,
-                       const py::object& easing) {
+                       const py::object& easing, const py::object& progress) {
              KeyPoseInputs inputs = key_pose_inputs(keys_xy, edges, frames, keys_at, loop, hold, rotation, turns,
                                                     steiner, weights, enclosure_sides, verify, frame_check,
                                                     correspond, pins, easing);
+             std::shared_ptr<sm::Progress> watched = to_progress(progress);
              py::gil_scoped_release release;
-             return std::make_unique<sm::KeyPoseMorphSolver>(inputs.keys, inputs.options);
+             CallProgress installed(std::move(watched));
+             auto solver = std::make_unique<sm::KeyPoseMorphSolver>(inputs.keys, inputs.options);
+             installed.finished();
+             return solver;
            }),
            py::arg("keys_xy"), py::arg("edges"), py::arg("frames") = py::none(), py::arg("keys_at") = py::none(),
            py::arg("loop") = false, py::arg("hold") = py::none(), py::arg("rotation") = py::none(),
            py::arg("turns") = py::none(), py::arg("steiner") = py::none(), py::arg("weights") = py::none(),
            py::arg("enclosure_sides") = py::none(), py::arg("verify") = py::none(),
            py::arg("frame_check") = py::none(), py::arg("correspond") = py::none(), py::arg("pins") = py::none(),
-           py::arg("easing") = py::none())
+           py::arg("easing") = py::none(), py::arg("progress") = py::none())
       .def(
           "solve",
           [](sm::KeyPoseMorphSolver& solver, const py::object& time) {

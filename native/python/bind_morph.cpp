@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bindings.h"
+#include "progress_argument.h"
 #include "conversions.h"
 #include "morph_arguments.h"
 #include "stickmorph/argument_limits.h"
@@ -487,17 +488,20 @@ Raises:
          const py::object& enclosure_sides, const py::object& method, const py::object& verify,
          const py::object& target_edges, const py::object& rotation, const py::object& turns,
          const py::object& easing, const py::object& correspond, const py::object& pins,
-         const py::object& frame_check) {
+         const py::object& frame_check, const py::object& progress) {
         // Arguments first, figures second, as the CLI does.
         const sm::MorphStickFiguresOptions options =
             to_morph_options(frames, steiner, weights, enclosure_sides, method, verify, rotation, turns, easing,
                              correspond, pins, frame_check);
+        std::shared_ptr<sm::Progress> watched = to_progress(progress);
         const auto figures =
             make_figure_pair(source_xy, target_xy, edges, target_edges, "source_xy", "target_xy");
         sm::MorphStickFiguresResult result;
         {
           py::gil_scoped_release release;
+          CallProgress installed(std::move(watched));
           result = sm::morph_stick_figures(figures.first, figures.second, options);
+          installed.finished();
         }
         const std::size_t n = result.correspondence ? result.correspondence->source.vertices.size()
                                                     : figures.first.vertices.size();
@@ -508,6 +512,7 @@ Raises:
       py::arg("method") = "rigid", py::arg("verify") = py::none(), py::arg("target_edges") = py::none(),
       py::arg("rotation") = py::none(), py::arg("turns") = py::none(), py::arg("easing") = py::none(),
       py::arg("correspond") = py::none(), py::arg("pins") = py::none(), py::arg("frame_check") = py::none(),
+      py::arg("progress") = py::none(),
       with_limits(R"doc(Morphs one stick figure into a compatible one (paper, Algorithm 3).
 
 The rigid method (default) morphs as rigidly as validity allows: the
@@ -571,6 +576,12 @@ Args:
   stickmorph.option_rules lists, for each option, the methods it applies
   to, its range or accepted names and its default: the engine's table.
   target_edges: optional #E by 2 integer array-like, the target's edge list.
+  progress: optional stickmorph.Progress, to watch the call (stage,
+    fraction, summary()) and cancel it (cancel()) from another thread while
+    it runs without the GIL; stages "check", "correspond" (with
+    correspond="auto"), "triangulate" (for the rigid method also the
+    solver's set-up) and "frames" (counted in frames). None (default): the
+    Progress a `with progress:` block installed on this thread, if any.
 
 Returns:
   dict with
@@ -629,7 +640,9 @@ Raises:
     method, weights or steiner name, enclosure_sides out of range, an option
     method="linear" would ignore, or an array of the wrong shape or type.
   VerificationError: a triangulation or a frame failed exact verification
-    and could not be repaired.)doc"));
+    and could not be repaired.
+  CancelledError: progress.cancel() was called while the call ran (or
+    before); it stopped at its next check and returns nothing.)doc"));
 }
 
 }  // namespace stickmorph::python

@@ -24,6 +24,9 @@ void bind_options(pybind11::module_& m);
 /// morph, MorphSolver and RigidMorphSolver (bind_morph.cpp).
 void bind_morph(pybind11::module_& m);
 
+/// stickmorph.Progress: progress and cancellation of long calls (bind_progress.cpp).
+void bind_progress(pybind11::module_& m);
+
 /// morph_key_poses, the morph through a sequence of key poses (bind_key_poses.cpp).
 void bind_key_poses(pybind11::module_& m);
 

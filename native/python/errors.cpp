@@ -72,6 +72,7 @@ py::handle g_incompatible_figures_error;
 py::handle g_verification_error;
 py::handle g_numeric_range_error;
 py::handle g_internal_error;
+py::handle g_cancelled_error;
 py::handle g_file_error;
 // errno -> the FileError subclass that also derives from the matching
 // built-in OSError subclass (FileNotFoundError, ...); other errno values
@@ -210,6 +211,8 @@ void translate_exception(std::exception_ptr pointer) {
     raise_with_message(g_numeric_range_error, e.what());
   } catch (const sm::InternalError& e) {
     raise_with_message(g_internal_error, e.what());
+  } catch (const sm::CancelledError& e) {
+    raise_with_message(g_cancelled_error, e.what());
   } catch (const sm::Error& e) {
     raise_with_message(g_stickmorph_error, e.what());
   }
@@ -264,6 +267,12 @@ void bind_errors(py::module_& m) {
   g_internal_error = new_exception(
       m, "InternalError", PyExc_RuntimeError,
       "An internal consistency check of stickmorph failed: a bug, never the caller's fault.");
+  // Neither a StickMorphError nor a RuntimeError: the caller asked for it,
+  // so code that reports bad input or bugs must not catch it as either.
+  g_cancelled_error = new_exception(
+      m, "CancelledError", PyExc_Exception,
+      "The call was cancelled through its stickmorph.Progress (Progress.cancel()); it stopped at the\n"
+      "engine's next check and returned nothing. The message names the stage it stopped in.");
 
   bind_file_errors(m);
   py::register_local_exception_translator(translate_exception);

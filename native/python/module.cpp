@@ -53,6 +53,7 @@ PYBIND11_MODULE(stickmorph, m) {
   stickmorph::python::bind_figures(m);
   stickmorph::python::bind_triangulation(m);
   stickmorph::python::bind_options(m);
+  stickmorph::python::bind_progress(m);  // before the calls that take progress=
   stickmorph::python::bind_morph(m);
   stickmorph::python::bind_key_poses(m);
 }
