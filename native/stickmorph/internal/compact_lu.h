@@ -13,6 +13,7 @@
 #include <Eigen/SparseLU>
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace stickmorph::internal {
@@ -98,6 +99,13 @@ class CompactLU {
   /// with pivoting. A pivot order kept from a nearby matrix can still grow
   /// the factors, so callers check the residual of what they solve.
   bool refactorize(const Eigen::SparseMatrix<double>& a);
+  /// The same on the structure and pivot order of `base` (another anchor
+  /// of the same system), into these factors: their structure becomes
+  /// base's (its indices copied, 4 bytes a nonzero, unless both came from
+  /// the same SparseLU factorization; base's values are not needed), so the
+  /// result is bit for bit what base.refactorize(a) would give, and base
+  /// is left as it is. False as refactorize().
+  bool refactorize_from(const CompactLU& base, const Eigen::SparseMatrix<double>& a);
 
  private:
   std::vector<int> pr_, pc_;            // P_r, P_c as index maps
@@ -109,6 +117,19 @@ class CompactLU {
   bool upper_sorted_ = false;  // U's columns in row order (refactorize's need)
   void sort_upper_columns();
   std::vector<int> pc_inverse_;
+  // Per column r of L, the last column of its supernode: the columns
+  // r .. supernode_end_[r] whose rows below the diagonal are each the next
+  // column's row and then the same rows (the dense blocks of SparseLU's
+  // supernodes, as copied). Found on the first refactorize().
+  std::vector<int> supernode_end_;
+  // Which SparseLU factorization the structure was copied from (0: none);
+  // refactorize_from copies a structure only when this differs.
+  std::uint64_t pattern_ = 0;
+  void find_supernodes();
+  // refactorize()'s: one supernode's nonzero entries of U(:, j), their
+  // rows (then where their columns' rows below the supernode start) and values.
+  std::vector<int> segment_start_;
+  std::vector<double> segment_value_;
   std::vector<double> work_;
   std::vector<int> stamp_;
 };
@@ -125,6 +146,14 @@ class CompactLU {
 /// False if `lu` finds `a` singular.
 bool factorize_checked(const Eigen::SparseMatrix<double>& a, const Eigen::MatrixX2d& b, double tolerance,
                        bool try_refactorization, SymmetricOrderedLU& lu, CompactLU& factors,
+                       Eigen::MatrixX2d* solution = nullptr);
+/// The same with the refactorization tried on the structure of `base`
+/// (CompactLU::refactorize_from) and the new factors going to `factors`,
+/// base unchanged: a system that keeps several anchors (ConvexCombination
+/// System) makes a new one next to the one it iterated on. `base` may be
+/// `factors` itself; it is not read unless `try_refactorization`.
+bool factorize_checked(const Eigen::SparseMatrix<double>& a, const Eigen::MatrixX2d& b, double tolerance,
+                       bool try_refactorization, SymmetricOrderedLU& lu, const CompactLU& base, CompactLU& factors,
                        Eigen::MatrixX2d* solution = nullptr);
 
 }  // namespace stickmorph::internal
