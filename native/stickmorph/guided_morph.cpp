@@ -410,6 +410,11 @@ GuidedMorph::GuidedMorph(const FigureTriangulation& normalised, const StickFigur
   }
   auto start = Clock::now();
   s.sample_guide();
+  // The sampled solves' factorizations are not kept as anchors: a playback
+  // in order then solves bit for bit as with one anchor (issue 29; see
+  // ConvexCombinationSystem::begin_playback).
+  s.steiner_system.begin_playback();
+  s.full_system.begin_playback();
   s.stats.guide_ms += ms_since(start);
   s.count_factorizations();
   // The triangulation in output space (section 6's rotated enclosure).

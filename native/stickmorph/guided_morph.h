@@ -117,6 +117,21 @@ class GuidedMorph {
   /// triangulations exactly; `frame` names it in messages (negative: by its
   /// time), `context` leads them. With `verify`, every frame is checked
   /// exactly as described above.
+  ///
+  /// Scrubbing (issue 29): each of the two systems (the Steiner solve of
+  /// step 2, the blended solve of step 4) keeps up to 16 factorizations
+  /// (anchors, at most 256 MiB of factors per system; at 10^4 vertices
+  /// 1-8 MiB each) and 32 solutions, and iterates on the anchor nearest in
+  /// the morph parameter from the solutions nearest to it, as MorphSolver
+  /// does; it factorizes only when that iteration does not converge, and
+  /// the new factorization replaces the least recently used anchor. So the
+  /// frame depends only on the sequence of times asked since construction
+  /// (and `verify`, `check`, which choose among the repairs of a frame that
+  /// fails its check): two morphs given the same times agree bit for bit,
+  /// and a time asked again after others agrees with its first frame to
+  /// the solvers' tolerance (ten digits), not bit for bit. Times asked in
+  /// increasing order from construction (guided_morph, a playback) are
+  /// solved exactly as with a single anchor and the latest solutions.
   /// @throws InvalidArgumentError for t outside [0, 1]; VerificationError
   ///         "<context><frame label>: <defect>" when no candidate passes.
   GuidedFrame frame(double t, int frame, bool verify, const std::string& context,

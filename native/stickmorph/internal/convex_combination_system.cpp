@@ -3,7 +3,9 @@
 #include "stickmorph/internal/convex_combination_system.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <limits>
 #include <utility>
 
 #include "stickmorph/internal/long_double_refinement.h"
@@ -129,34 +131,181 @@ bool ConvexCombinationSystem::solve(double u, const Weights& weights, std::vecto
   // (measured: 0.2-0.25 ms of a 1.1-1.2 ms frame there). Trying in every
   // solve instead saves factorizations (spiral 29 -> 23, rings 13 -> 7,
   // measured with GMRES) but costs as much in steps.
-  if (factorized_ && !history_.empty() && skipped_ == 0) {
+  ++solves_;
+  if (factorized_) {
+    current_ = choose_anchor(u);
+    anchors_[current_].used = solves_;
+  }
+  if (factorized_ && !pool_.empty() && skipped_ == 0) {
     const double tolerance = tolerance_ * std::max(b.norm(), 1e-300);
-    x = least_squares_start(a_, b, history_, u, warm_start_storage_);
+    x = least_squares_start(a_, b, nearest_solutions(u), u, warm_start_storage_);
+    const CompactLU& factors = anchors_[current_].factors;
     // Densely filled factors (see kAnchorIterationsDense) iterate longer
     // and, after a failure, try again on the anchor just made: the next
     // frame converges on it in 4-6 steps, a fifth of what factorizing
     // again costs there.
-    const bool dense = !factors_.refactorization_pays();
-    solved = preconditioned_gmres(a_, factors_, b, x, tolerance,
-                                  dense ? kAnchorIterationsDense : kAnchorIterations, gmres_);
+    const bool dense = !factors.refactorization_pays();
+    solved = preconditioned_gmres(a_, factors, b, x, tolerance, dense ? kAnchorIterationsDense : kAnchorIterations,
+                                  gmres_);
     failures_in_a_row_ = solved ? 0 : failures_in_a_row_ + 1;
     if (!solved && !dense) skipped_ = std::min(kMostSkipped, 1 << std::min(failures_in_a_row_ - 1, 8));
   } else if (skipped_ > 0) {
     --skipped_;
   }
   if (!solved) {
-    // A static-pivot refactorization on the last factors' structure
-    // first, kept when its solution meets the tolerance; else SparseLU
-    // with pivoting (factorize_checked, as MorphSolver does).
-    factorized_ = factorize_checked(a_, b, tolerance_, factorized_, lu_, factors_, &x);
-    if (!factorized_) return false;
+    // A static-pivot refactorization on the structure of the anchor just
+    // chosen first, kept when its solution meets the tolerance; else
+    // SparseLU with pivoting (factorize_checked, as MorphSolver does). The
+    // new factors are a new anchor at u (or replace the least recently
+    // used one), the chosen one is kept.
+    const std::size_t base = current_;
+    const std::size_t slot = free_anchor_slot();
+    factorized_ = factorize_checked(a_, b, tolerance_, factorized_, lu_, anchors_[base].factors,
+                                    anchors_[slot].factors, &x);
+    if (!factorized_) {
+      anchors_.clear();
+      current_ = 0;
+      return false;
+    }
+    anchors_[slot].u = u;
+    anchors_[slot].used = solves_;
+    current_ = slot;
     ++factorizations_;
   }
   if (!x.allFinite()) return false;
-  if (history_.size() == kHistory) history_.erase(history_.begin());
-  history_.push_back({u, x});
+  keep_solution(u, x);
   for (int row = 0; row < m; ++row) positions[nodes_[row]] = {x(row, 0), x(row, 1)};
   return true;
+}
+
+// The anchor nearest in u, the one of the latest solve on a tie. In a
+// playback in order (u never decreasing since begin_playback) every anchor
+// was made at or before the latest solve's u, so the latest factorization is
+// the nearest: the choice is the single anchor of before (issue 29).
+//
+// Issue 29, measured at 10^4 vertices (benchmark_scrub's seeded scrub of
+// 240 random times after a playback of 240): with one anchor and the latest
+// six solutions, a jump left the anchor and the warm start far from the
+// frame, and the densely filled blended system of the thinned family
+// (67 nonzeros of L and U per row, SparseLU every time) factorized in 166
+// of the 240 frames, 31 frames per second of CPU time against 68 in order;
+// with sixteen anchors and the six kept solutions nearest in u, 1-2
+// factorizations and 70 frames per second, the steps per frame (5.4) those
+// of the playback in order. Where the blended system refactorizes in
+// nearly every frame even in order (polygon, rings: its weights follow the
+// guide's trust and stars, and a frame-old anchor already misses by more
+// than four steps), the anchors cannot save factorizations; there the
+// nearest anchor's structure makes the static-pivot refactorization fail
+// less often (polygon: 47 SparseLU factorizations of 240 in the scrub
+// before, 1 after), and the refactorization itself was made faster
+// (compact_lu.cpp).
+std::size_t ConvexCombinationSystem::choose_anchor(double u) const {
+  std::size_t best = current_;
+  for (std::size_t i = 0; i < anchors_.size(); ++i)
+    if (std::abs(anchors_[i].u - u) < std::abs(anchors_[best].u - u)) best = i;
+  return best;
+}
+
+// Where a new factorization goes: the set-up's anchor itself (see below),
+// else a new anchor while fewer than kMaxAnchors
+// are kept and their factors fit in kAnchorBudgetBytes (each about 12 bytes
+// a nonzero of L and U: its values, row indices and scratch), otherwise the
+// least recently used one other than the one just chosen (whose structure
+// the refactorization starts from).
+std::size_t ConvexCombinationSystem::free_anchor_slot() {
+  // The set-up's anchor is refactorized in place (so it is the only anchor
+  // until then): kept beside the playback's, it would be nearer than the
+  // latest to some frames of a playback in order.
+  if (!anchors_.empty() && anchors_[current_].before_playback) {
+    anchors_[current_].before_playback = false;
+    return current_;
+  }
+  const double bytes =
+      anchors_.empty() ? 0.0 : 12.0 * double(anchors_[current_].factors.nonzeros()) * double(anchors_.size() + 1);
+  if (anchors_.size() < kMaxAnchors && bytes <= kAnchorBudgetBytes) {
+    anchors_.emplace_back();
+    return anchors_.size() - 1;
+  }
+  if (anchors_.size() < 2) return current_;  // one fits: refactorized in place, as before issue 29
+  std::size_t oldest = current_ == 0 ? 1 : 0;
+  for (std::size_t i = 0; i < anchors_.size(); ++i)
+    if (i != current_ && anchors_[i].used < anchors_[oldest].used) oldest = i;
+  return oldest;
+}
+
+// Keeps x, the solution at u. A full pool drops one of its solutions other
+// than the kHistory latest (which a playback in order combines): one from
+// before begin_playback first, else the one nearest in u to another kept
+// one (the older of such a pair), so that the pool spreads over the u
+// asked and a scrub finds solutions on both sides of most times.
+void ConvexCombinationSystem::keep_solution(double u, const Eigen::MatrixX2d& x) {
+  if (pool_.size() >= kPool) {
+    // pool_ is in the order solved: its last kHistory are the latest.
+    const std::size_t latest = pool_.size() - kHistory;
+    std::size_t drop = pool_.size();
+    double drop_gap = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < latest; ++i) {
+      const Kept& k = pool_[i];
+      if (k.before_playback) {
+        if (drop == pool_.size() || !pool_[drop].before_playback || k.order < pool_[drop].order) {
+          drop = i;
+          drop_gap = -1;
+        }
+        continue;
+      }
+      if (drop != pool_.size() && pool_[drop].before_playback) continue;
+      double gap = std::numeric_limits<double>::infinity();
+      for (std::size_t j = 0; j < pool_.size(); ++j)
+        if (j != i) gap = std::min(gap, std::abs(pool_[j].solution.t - k.solution.t));
+      if (gap < drop_gap || (gap == drop_gap && k.order < pool_[drop].order)) {
+        drop = i;
+        drop_gap = gap;
+      }
+    }
+    if (drop == pool_.size()) drop = 0;
+    pool_.erase(pool_.begin() + std::ptrdiff_t(drop));
+  }
+  Kept kept;
+  kept.solution = {u, x};
+  kept.order = solves_;
+  pool_.push_back(std::move(kept));
+}
+
+// The kHistory kept solutions nearest in u (the later on a tie; those from
+// before begin_playback only after all later ones, the latest first),
+// oldest first as least_squares_start takes them. In a playback in order
+// they are the kHistory latest.
+std::vector<const KeptSolution*> ConvexCombinationSystem::nearest_solutions(double u) const {
+  std::vector<const Kept*> order;
+  for (const Kept& k : pool_) order.push_back(&k);
+  auto nearer = [u](const Kept* p, const Kept* q) {
+    if (p->before_playback != q->before_playback) return q->before_playback;
+    if (!p->before_playback) {
+      const double dp = std::abs(p->solution.t - u), dq = std::abs(q->solution.t - u);
+      if (dp != dq) return dp < dq;
+    }
+    return p->order > q->order;
+  };
+  const std::size_t h = std::min(kHistory, order.size());
+  std::partial_sort(order.begin(), order.begin() + std::ptrdiff_t(h), order.end(), nearer);
+  order.resize(h);
+  std::sort(order.begin(), order.end(), [](const Kept* p, const Kept* q) { return p->order < q->order; });
+  std::vector<const KeptSolution*> nearest;
+  for (const Kept* k : order) nearest.push_back(&k->solution);
+  return nearest;
+}
+
+void ConvexCombinationSystem::begin_playback() {
+  if (!anchors_.empty()) {
+    Anchor latest = std::move(anchors_[current_]);
+    anchors_.clear();
+    anchors_.push_back(std::move(latest));
+    anchors_.front().before_playback = true;
+    current_ = 0;
+  }
+  // The kHistory latest solutions, which the first solves combine as before.
+  while (pool_.size() > kHistory) pool_.erase(pool_.begin());
+  for (Kept& k : pool_) k.before_playback = true;
 }
 
 // Iterative refinement of the latest solve, whose unknowns `positions`
@@ -170,6 +319,7 @@ bool ConvexCombinationSystem::solve(double u, const Weights& weights, std::vecto
 // spacing of doubles.
 void ConvexCombinationSystem::refine(std::vector<Vec2>& positions, int rounds) const {
   if (nodes_.empty() || !factorized_) return;
+  const CompactLU& factors = anchors_[current_].factors;
   const int m = size();
   LongMatrixX2 x(m, 2);
   for (int row = 0; row < m; ++row) {
@@ -178,7 +328,7 @@ void ConvexCombinationSystem::refine(std::vector<Vec2>& positions, int rounds) c
   }
   const double* values = a_.valuePtr();
   const bool finite = refine_in_long_double(
-      a_, [&](Eigen::Index e) { return static_cast<long double>(values[e]); }, b_.cast<long double>(), factors_, x,
+      a_, [&](Eigen::Index e) { return static_cast<long double>(values[e]); }, b_.cast<long double>(), factors, x,
       rounds);
   // A correction that is not finite: the positions stay as solved.
   if (!finite) return;

@@ -61,12 +61,20 @@ std::vector<Eigen::MatrixX2d> extrapolated_starts(const std::vector<KeptSolution
 Eigen::MatrixX2d least_squares_start(const Eigen::SparseMatrix<double>& a, const Eigen::MatrixX2d& b,
                                      const std::vector<KeptSolution>& kept, double t,
                                      LeastSquaresStartStorage& storage) {
+  std::vector<const KeptSolution*> pointers;
+  for (const KeptSolution& solution : kept) pointers.push_back(&solution);
+  return least_squares_start(a, b, pointers, t, storage);
+}
+
+Eigen::MatrixX2d least_squares_start(const Eigen::SparseMatrix<double>& a, const Eigen::MatrixX2d& b,
+                                     const std::vector<const KeptSolution*>& kept, double t,
+                                     LeastSquaresStartStorage& storage) {
   const std::size_t h = kept.size();
-  Eigen::MatrixX2d best = kept.back().x;
+  Eigen::MatrixX2d best = kept.back()->x;
   double best_norm = (b - a * best).norm();
   if (h == 2) {
-    const KeptSolution& p = kept[0];
-    const KeptSolution& q = kept[1];
+    const KeptSolution& p = *kept[0];
+    const KeptSolution& q = *kept[1];
     if (p.t != q.t) {
       Eigen::MatrixX2d candidate = q.x + ((t - q.t) / (q.t - p.t)) * (q.x - p.x);
       if ((b - a * candidate).norm() < best_norm) best = std::move(candidate);
@@ -76,7 +84,7 @@ Eigen::MatrixX2d least_squares_start(const Eigen::SparseMatrix<double>& a, const
     Eigen::MatrixXd& basis = storage.basis;
     Eigen::MatrixXd& images = storage.images;
     basis.resize(a.rows(), 2 * int(h));
-    for (std::size_t i = 0; i < h; ++i) basis.middleCols(2 * int(i), 2) = kept[i].x;
+    for (std::size_t i = 0; i < h; ++i) basis.middleCols(2 * int(i), 2) = kept[i]->x;
     images = a * basis;
     const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(images);
     const Eigen::MatrixXd y = qr.solve(b);

@@ -49,6 +49,11 @@ struct LeastSquaresStartStorage {
 Eigen::MatrixX2d least_squares_start(const Eigen::SparseMatrix<double>& a, const Eigen::MatrixX2d& b,
                                      const std::vector<KeptSolution>& kept, double t,
                                      LeastSquaresStartStorage& storage);
+/// The same over solutions kept elsewhere (oldest first): ConvexCombinationSystem
+/// picks them from its pool by nearness in t, without copying them.
+Eigen::MatrixX2d least_squares_start(const Eigen::SparseMatrix<double>& a, const Eigen::MatrixX2d& b,
+                                     const std::vector<const KeptSolution*>& kept, double t,
+                                     LeastSquaresStartStorage& storage);
 
 }  // namespace internal
 }  // namespace stickmorph
