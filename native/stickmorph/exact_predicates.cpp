@@ -89,6 +89,13 @@ bool strictly_inside_corner(const Vec2& v, const Vec2& next, const Vec2& prev, b
 }
 
 std::vector<std::pair<int, int>> overlapping_boxes(const std::vector<Segment>& a, const std::vector<Segment>& b) {
+  std::vector<std::pair<int, int>> pairs;
+  for_each_overlapping_box(a, b, [&](int i, int j) { pairs.emplace_back(i, j); });
+  return pairs;
+}
+
+void for_each_overlapping_box(const std::vector<Segment>& a, const std::vector<Segment>& b,
+                              const std::function<void(int, int)>& visit) {
   using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, int>;
   auto boxes = [](const std::vector<Segment>& segments) {
     std::vector<Box> out;
@@ -102,10 +109,8 @@ std::vector<std::pair<int, int>> overlapping_boxes(const std::vector<Segment>& a
     return out;
   };
   std::vector<Box> boxes_a = boxes(a), boxes_b = boxes(b);
-  std::vector<std::pair<int, int>> pairs;
   CGAL::box_intersection_d(boxes_a.begin(), boxes_a.end(), boxes_b.begin(), boxes_b.end(),
-                           [&](const Box& x, const Box& y) { pairs.emplace_back(x.info(), y.info()); });
-  return pairs;
+                           [&](const Box& x, const Box& y) { visit(x.info(), y.info()); });
 }
 
 int signed_area_sign(const std::vector<Vec2>& corners) {

@@ -6,6 +6,7 @@
 // the given doubles, never subject to rounding.
 #pragma once
 
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -52,6 +53,14 @@ using Segment = std::array<Vec2, 2>;
 /// intersection test must look at. CGAL's box intersection, O((m + n) log
 /// and the number of pairs); boxes of doubles are exact.
 std::vector<std::pair<int, int>> overlapping_boxes(const std::vector<Segment>& a, const std::vector<Segment>& b);
+
+/// The same pairs, each handed to `visit(i, j)` as it is found instead of
+/// collected: the number of pairs can be quadratic (the long diagonals of a
+/// densely sampled curve's exterior face overlap thousands of edges each;
+/// issue 29's 10^5-vertex wavy polyline collected 16 GB of them), and a
+/// caller that only needs a verdict per segment keeps none.
+void for_each_overlapping_box(const std::vector<Segment>& a, const std::vector<Segment>& b,
+                              const std::function<void(int, int)>& visit);
 
 /// Exact sign of the signed area (shoelace sum) of a closed polygon
 /// given by its corner positions, in order: +1 counter-clockwise, -1

@@ -49,6 +49,7 @@ std::set<std::pair<int, int>> common_diagonals(const PolygonPair& pair, const st
            clear_of_edges(target, from, to) && clear_of_edges(source, from, to);
   };
   std::vector<Segment> diagonals, edges;
+  std::vector<int> diagonal_candidate;  // diagonals[k] is candidates[diagonal_candidate[k]]
   std::vector<char> ok(candidates.size(), 0);
   // Exact tests on every candidate and every overlapping pair: seconds on
   // a 10^5-vertex figure's exterior face, so cancellable (cancellation.h).
@@ -56,22 +57,30 @@ std::set<std::pair<int, int>> common_diagonals(const PolygonPair& pair, const st
     poll_cancellation();
     const auto [a, b] = candidates[i];
     ok[i] = target.corners[a] != target.corners[b] && enters(a, b) && enters(b, a);
-    diagonals.push_back({target.at(a), target.at(b)});
+    // Only those still in the running are boxed: the others cannot be saved.
+    if (ok[i]) {
+      diagonals.push_back({target.at(a), target.at(b)});
+      diagonal_candidate.push_back(int(i));
+    }
   }
   for (int k = 0; k < n; ++k) edges.push_back({target.at(k), target.at((k + 1) % n)});
-  // ... and meets no edge of the target except at its own ends.
-  for (const auto& [i, e] : overlapping_boxes(diagonals, edges)) {
-    if (!ok[i]) continue;
+  // ... and meets no edge of the target except at its own ends. The pairs
+  // are visited, not collected (for_each_overlapping_box says why); one
+  // blocking edge decides, so a diagonal already out skips its exact tests.
+  // Order does not matter: a diagonal is out iff some edge blocks it.
+  for_each_overlapping_box(diagonals, edges, [&](int k, int e) {
+    const int i = diagonal_candidate[std::size_t(k)];
+    if (!ok[i]) return;
     poll_cancellation();
     const auto [a, b] = candidates[i];
     const int va = pair.corners[a], vb = pair.corners[b];
     const int ea = pair.corners[e], eb = pair.corners[(e + 1) % n];
-    const SegmentContact contact = segment_contact(diagonals[i][0], diagonals[i][1], edges[e][0], edges[e][1]);
-    if (contact == SegmentContact::Disjoint) continue;
+    const SegmentContact contact = segment_contact(diagonals[k][0], diagonals[k][1], edges[e][0], edges[e][1]);
+    if (contact == SegmentContact::Disjoint) return;
     const bool shares_end = ea == va || ea == vb || eb == va || eb == vb;
-    if (contact == SegmentContact::Touching && shares_end) continue;
+    if (contact == SegmentContact::Touching && shares_end) return;
     ok[i] = 0;
-  }
+  });
   for (std::size_t i = 0; i < candidates.size(); ++i)
     if (ok[i]) common.insert(candidates[i]);
   return common;
