@@ -40,6 +40,13 @@ int remove_redundant_steiner(const PolygonPair& pair, CompatibleMesh& mesh, cons
   // vertex can go, so each is tried a few times rather than after every
   // neighbour's removal.
   constexpr int kShortLink = 32;
+  // Links longer than this are not tried at all: the dynamic programme
+  // takes d^3 time and d^2 memory, and on a 10^5-vertex wavy polyline (issue
+  // 29's benchmark) removals merged the exterior's Steiner vertices into
+  // links so long that one try had not ended after 11 minutes. Keeping such
+  // a vertex is always valid (it only costs one Steiner vertex); a link of
+  // 1024 costs about a second and 12 MB.
+  constexpr int kLongestLink = 1024;
   std::vector<char> dirty(nodes, 1);
   if (candidates)
     for (int v = 0; v < nodes; ++v) dirty[v] = v < int(candidates->size()) && (*candidates)[v];
@@ -55,6 +62,10 @@ int remove_redundant_steiner(const PolygonPair& pair, CompatibleMesh& mesh, cons
       for (int t : around[v])
         if (mesh.alive[t]) star.push_back(t);
       around[v] = star;
+      if (int(star.size()) > kLongestLink) {
+        dirty[v] = 0;  // tried again only if its star changes (and shrinks)
+        continue;
+      }
       if (!long_links && int(star.size()) > kShortLink) continue;  // stays dirty
       dirty[v] = 0;
       const std::vector<int> link = link_of(mesh, star, v);
