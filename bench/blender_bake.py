@@ -3,13 +3,15 @@
 
     /usr/bin/python3 bench/blender_bake.py [--build DIR | --cli PATH --module DIR] [--blender BLENDER]
         [--package ZIP | --dist DIR] [--sizes 1000,10000,100000] [--shapes wavy,coral] [--frames 250] [--large-shapes wavy]
-        [--playback-frames 250] [--render-max 10000] [--json FILE] [--keep DIR]
+        [--playback-frames 250] [--render-max 10000] [--cli-max 10000] [--json FILE] [--keep DIR]
 
 For every (shape, n), in one run and one after the other on the same machine:
   1. the pair is drawn (numpy; checked compatible by the module in --build) and written as the
      CLI's figure files;
   2. the CLI: `stickmorph morph SOURCE TARGET -o OUT --frames F` (the default rigid motion),
      its wall time and peak memory (wait4), and its own stage times (stats.milliseconds);
+     n <= --cli-max only (at 10^5 vertices and 250 frames its JSON is 1.2 GB, and the bake's
+     engine time is the same work);
   3. a new headless Blender (`--factory-startup`, user folders in a temporary sandbox,
      scripts/blender_sandbox.py) with the add-on package installed: the two meshes are made
      and object.stick_morph_bake runs as a user runs it (source, target, F frames, the
@@ -128,7 +130,7 @@ def find_package(blender, dist):
 
 
 def run_case(args, shape, n, package, blender_sandbox, stickmorph):
-    row = {"shape": shape, "n": n, "frames": args.frames}
+    row = {"shape": shape, "n": n, "frames": args.frames, "commit": args.commit}
     work = tempfile.mkdtemp(prefix=f"stickmorph-blender-bench-{shape}-{n}-")
     try:
         source, target, edges, how = make_pair(shape, n, args.seed, stickmorph)
@@ -136,7 +138,8 @@ def run_case(args, shape, n, package, blender_sandbox, stickmorph):
         source_path, target_path = os.path.join(work, "source.json"), os.path.join(work, "target.json")
         write_figure(source_path, "Source", source, edges)
         write_figure(target_path, "Target", target, edges)
-        row.update(run_cli(args.cli, source_path, target_path, args.frames, work))
+        if n <= args.cli_max:
+            row.update(run_cli(args.cli, source_path, target_path, args.frames, work))
         case = {"source": source_path, "target": target_path, "frames": args.frames,
                 "playback_frames": min(args.playback_frames, args.frames), "render": n <= args.render_max,
                 "package": package, "out": os.path.join(work, "blender.json"),
@@ -156,7 +159,7 @@ def run_case(args, shape, n, package, blender_sandbox, stickmorph):
             raise RuntimeError(f"Blender failed ({done.returncode}):\n{tail}")
         with open(case["out"], encoding="utf-8") as f:
             row.update(json.load(f))
-        row["bake_over_cli"] = row["bake_s"] / row["cli_s"]
+        row["bake_over_cli"] = row["bake_s"] / row["cli_s"] if "cli_s" in row else None
     except Exception as error:  # noqa: BLE001 - the row says what failed; the others still run
         row["error"] = str(error)
     finally:
@@ -179,10 +182,10 @@ def print_table(rows):
             continue
         render = ("–" if r.get("render_visible") is None else
                   f"{'visible' if r['render_visible'] else 'EMPTY'} ({100 * r['render_coverage']:.1f} %)")
-        print(f"| {r['shape']} | {r['n']} | {r['frames']} | {r['cli_s']:.2f} | {r['bake_s']:.2f} | "
-              f"{r['bake_over_cli']:.2f} | {fmt(r.get('engine_s'), '.2f')} | {fmt(r.get('blender_side_s'), '.2f')} | "
+        print(f"| {r['shape']} | {r['n']} | {r['frames']} | {fmt(r.get('cli_s'), '.2f')} | {r['bake_s']:.2f} | "
+              f"{fmt(r['bake_over_cli'], '.2f')} | {fmt(r.get('engine_s'), '.2f')} | {fmt(r.get('blender_side_s'), '.2f')} | "
               f"{r['playback_fps_tubes']:.1f} | {r['playback_fps_plain']:.0f} | {render} | {r['blend_mib']:.1f} | "
-              f"{r['peak_mib']:.0f} | {r['cli_peak_mib']:.0f} |", flush=True)
+              f"{r['peak_mib']:.0f} | {fmt(r.get('cli_peak_mib'), '.0f')} |", flush=True)
 
 
 def main(argv=None):
@@ -200,11 +203,14 @@ def main(argv=None):
     parser.add_argument("--frames", type=int, default=250)
     parser.add_argument("--playback-frames", type=int, default=250)
     parser.add_argument("--render-max", type=int, default=10000)
+    parser.add_argument("--cli-max", type=int, default=10000, help="run the CLI up to this size")
     parser.add_argument("--seed", type=int, default=7)
     parser.add_argument("--json", help="write the rows here")
     parser.add_argument("--keep", help="keep the work folders and renders in this folder")
     args = parser.parse_args(argv)
     build = pathlib.Path(args.build).resolve()
+    args.commit = subprocess.run(["git", "-C", str(REPO), "rev-parse", "--short=12", "HEAD"], capture_output=True,
+                                 text=True).stdout.strip() or "unknown"
     args.cli = str(pathlib.Path(args.cli).resolve()) if args.cli else str(build / "stickmorph")
     sys.path.insert(0, str(pathlib.Path(args.module).resolve()) if args.module else str(build / "python"))
     import stickmorph

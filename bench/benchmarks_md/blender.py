@@ -25,7 +25,7 @@ def read_blender(data_dir):
         for row in rows:
             row["shape"], row["n"], row["frames"]  # noqa: B018 - only the KeyError matters
             if "error" not in row:
-                row["cli_s"], row["bake_s"], row["playback_fps_tubes"], row["playback_fps_plain"]  # noqa: B018
+                row["bake_s"], row["playback_fps_tubes"], row["playback_fps_plain"]  # noqa: B018
                 row["blend_mib"], row["peak_mib"]  # noqa: B018
     except (OSError, ValueError, KeyError, TypeError) as error:
         raise InputError(f"{path}: {error!r}") from error
@@ -40,7 +40,7 @@ def _render_cell(row):
 
 def blender_headline(rows):
     """One line for the report's headline: issue 29's two Blender targets at 10^4 vertices."""
-    done = [r for r in rows if "error" not in r and r["n"] == TARGET_N]
+    done = [r for r in rows if "error" not in r and r["n"] == TARGET_N and r.get("bake_over_cli") is not None]
     if not done:
         return f"Blender at scale ([below](#blender-at-scale)): no {TARGET_N}-vertex case was measured."
     worst_ratio = max(r["bake_over_cli"] for r in done)
@@ -59,12 +59,14 @@ def blender_section(rows):
         return ["\n## Blender at scale\n", "Not measured in this run (out/benchmarks/blender.json is missing: "
                 "bench/benchmarks.sh runs bench/blender_bake.py).\n"]
     version = next((r["blender"] for r in rows if "blender" in r), "?")
+    commits = sorted({r.get("commit", "?") for r in rows})
     md = ["\n## Blender at scale\n",
-          f"`bench/blender_bake.py` (issue 29), headless Blender {version} with the add-on package, one "
-          "Blender process per case. Each pair is drawn in numpy (`wavy`: issue 29's wavy polyline bent into "
+          f"`bench/blender_bake.py` (issue 29) at commit {', '.join(commits)}, headless Blender {version} with the "
+          "add-on package, one Blender process per case. Each pair is drawn in numpy (`wavy`: issue 29's wavy polyline bent into "
           "an arc; the others are `bench/speed_corpus.py`'s hand-drawn families: `coral` branches at every "
           "junction), morphed first by the CLI (`stickmorph morph SOURCE TARGET -o OUT --frames F`, the "
-          "default rigid motion, its wall time including writing the JSON) and then baked by "
+          "default rigid motion, its wall time including writing the JSON; up to 10⁴ vertices: at 10⁵ its JSON "
+          "is over a gigabyte and the bake's engine column is the same work) and then baked by "
           "`object.stick_morph_bake` with the same defaults in a new Blender. The bake's time is split into "
           "the engine's call (the module's `morph`, the same work as the CLI's) and the Blender side (reading "
           "the meshes, the checks, shape keys and keyframes, the tubes). Playback is `scene.frame_set(f)` and "
@@ -79,11 +81,11 @@ def blender_section(rows):
         if "error" in r:
             body.append([r["shape"], r["n"], r["frames"], "error: " + r["error"].splitlines()[-1]] + [""] * 11)
             continue
-        body.append([r["shape"], r["n"], r["frames"], f"{r['cli_s']:.2f}", f"{r['bake_s']:.2f}",
-                     f"{r['bake_over_cli']:.2f}", _num(r.get("engine_s"), ".2f"), _num(r.get("blender_side_s"), ".2f"),
+        body.append([r["shape"], r["n"], r["frames"], _num(r.get("cli_s"), ".2f"), f"{r['bake_s']:.2f}",
+                     _num(r.get("bake_over_cli"), ".2f"), _num(r.get("engine_s"), ".2f"), _num(r.get("blender_side_s"), ".2f"),
                      f"{r['playback_fps_tubes']:.1f}", f"{r['playback_fps_plain']:.0f}", _render_cell(r),
                      f"{r['blend_mib']:.1f}", f"{r['peak_before_mib']:.0f}", f"{r['peak_mib']:.0f}",
-                     f"{r['cli_peak_mib']:.0f}"])
+                     _num(r.get("cli_peak_mib"), ".0f")])
     md.append(table(["shape", "n", "frames", "CLI s", "bake s", "bake / CLI", "engine s", "Blender side s",
                      "playback fps (tubes)", "playback fps (no tubes)", "render", ".blend MiB",
                      "Blender MiB before", "Blender peak MiB", "CLI peak MiB"],
