@@ -59,6 +59,10 @@ def header_section(run):
         ["frames per morph", str(run["frames"])],
         ["runtime of the whole command", f"{run['runtime_s']:.0f} s ({run['runtime_s'] / 60:.1f} min)"],
     ], ["---", "---"]))
+    # A section re-measured later than the run (bench/benchmarks.sh's parts run
+    # by hand, e.g. after a change that only they measure) says so here.
+    for note in run.get("notes", []):
+        add("\n" + note + "\n")
     repeat = run.get("repeat", 1)
     repeated = (f"Each (case, method) runs in a child process of its own (peak memory is that process's "
                 f"`ru_maxrss`), with an address-space limit of {run['memory_limit_mib']} MiB and a time limit; "
