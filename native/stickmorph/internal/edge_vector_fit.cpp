@@ -3,6 +3,7 @@
 
 #include <numeric>
 
+#include "stickmorph/cancellation.h"
 #include "stickmorph/errors.h"
 
 namespace stickmorph {
@@ -65,6 +66,10 @@ std::vector<Vec2> EdgeVectorFit::part_centroids(const std::vector<Vec2>& points)
 
 std::vector<Vec2> EdgeVectorFit::positions(const std::vector<Vec2>& edge_vectors,
                                            const std::vector<Vec2>& centroids) const {
+  // One solve per guide sample: the rigid method's set-up samples the
+  // guide a few dozen times, seconds at 10^5 vertices, so each sample is a
+  // point where a cancelled call stops (cancellation.h).
+  poll_cancellation();
   Eigen::MatrixX2d rhs = Eigen::MatrixX2d::Zero(unknowns_, 2);
   for (std::size_t e = 0; e < edges_.size(); ++e) {
     const double dx = edge_vectors[e][0], dy = edge_vectors[e][1];
