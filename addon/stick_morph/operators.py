@@ -13,6 +13,12 @@ execute depends only on the operator's properties and the file, never on
 state kept from an earlier run, because Adjust Last Operation (and redo)
 undoes the last run and calls execute again on the restored file.
 
+From the GUI the pair bake and Bake Key Poses run modal (ModalBake, issue
+29): the meshes are read at once, the engine runs in a worker thread
+(bake_job.py) while the status bar shows its stage, Esc cancels with the
+scene unchanged, and the result is built when the engine is done. execute
+runs the same three steps in one go.
+
 numpy and the native module are imported only inside execute, after
 dependencies.check() found them: the add-on registers without them, and the
 bake reports what is missing as an ERROR instead of failing with a raw
@@ -24,6 +30,7 @@ import time
 import bpy
 from bpy.props import IntProperty, StringProperty
 
+from .bake_job import BakeJob, StageTimer
 from .common import BakeSettings, StickMorphError, is_pin_group, next_pin_name
 # The helpers the panel shares with the operators are helpers.py's (so that
 # ui.py need not import this module); dependency_status is re-exported for
@@ -31,17 +38,21 @@ from .common import BakeSettings, StickMorphError, is_pin_group, next_pin_name
 from .helpers import dependency_status, edited_meshes, resolve_pair  # noqa: F401
 from .properties import OPTION_NAMES, addon_preferences, bake_settings, option_properties
 
-class Progress:
-    """The window manager's progress indicator, one call per stage.
+class Progress(StageTimer):
+    """The window manager's progress indicator, one call per stage, and the
+    stages' times (bake_job.StageTimer).
 
     Only with a window: in background mode (tests, render_demo.py) there is
-    no cursor or status bar to show it, and 3.x prints nothing useful."""
+    no cursor or status bar to show it, and 3.x prints nothing useful.
+    `stages`: the stages a modal bake's worker already timed, continued."""
 
-    def __init__(self, context):
+    def __init__(self, context, stages=None):
+        super().__init__()
         wm = context.window_manager
         self.wm = wm if wm is not None and context.window is not None and not bpy.app.background else None
-        self.stages = []  # (name, milliseconds)
-        self._started = time.perf_counter()
+        if stages is not None:
+            self.stages = list(stages.stages)
+            self.percent = stages.percent
 
     def __enter__(self):
         if self.wm is not None:
@@ -49,23 +60,14 @@ class Progress:
         return self
 
     def update(self, percent):
+        super().update(percent)
         if self.wm is not None:
             self.wm.progress_update(percent)
-
-    def stage(self, name, percent):
-        """Ends the stage `name` (timed from the previous one) at `percent`."""
-        now = time.perf_counter()
-        self.stages.append((name, (now - self._started) * 1000.0))
-        self._started = now
-        self.update(percent)
 
     def __exit__(self, *exc):
         if self.wm is not None:
             self.wm.progress_end()
         return False
-
-    def summary(self):
-        return ", ".join(f"{name} {ms:.0f} ms" for name, ms in self.stages)
 
 
 # How long the result stays in the status bar (show_in_status_bar).
@@ -150,7 +152,131 @@ class BakeExecute:
             return {"CANCELLED"}
 
 
-class STICKMORPH_OT_bake(BakeExecute, bpy.types.Operator):
+# How often a modal bake looks at its worker (seconds).
+TIMER_SECONDS = 0.1
+# Events a running modal bake lets through: looking around. Everything else
+# waits for the bake, so that the scene it read cannot change under it
+# before it builds the result (and no second bake starts meanwhile).
+PASS_THROUGH = {"MIDDLEMOUSE", "WHEELUPMOUSE", "WHEELDOWNMOUSE", "WHEELINMOUSE", "WHEELOUTMOUSE",
+                "TRACKPADPAN", "TRACKPADZOOM", "MOUSEMOVE", "INBETWEEN_MOUSEMOVE", "NDOF_MOTION",
+                "WINDOW_DEACTIVATE", "TIMER_REPORT", "TIMERREGION"}
+
+
+class ModalBake(BakeExecute):
+    """A bake that the GUI runs modal (issue 29): invoke reads the meshes
+    (self.start, main thread), runs the engine's part in a worker thread
+    (bake_job.BakeJob) with a progress indicator and a status-bar text,
+    and builds the result (self.finish, main thread) when it is done. Esc or
+    a right-click cancels: the engine stops at its next check (within a
+    fraction of a second, also inside the triangulation), nothing is
+    created, the scene stays as it was, and a report says so.
+
+    execute (scripts, tests, redo, Adjust Last Operation) runs the same
+    three steps in one go, as before: run() = start, its work, finish.
+    Without a window (background mode) or with a module that has no
+    stickmorph.Progress, invoke is execute.
+
+    Subclasses define start(context, progress) -> work, where work(timer)
+    is free of bpy (it runs in the worker) and returns what
+    finish(context, progress, computed) builds from."""
+
+    def run(self, context, progress):
+        work = self.start(context, progress)
+        return self.finish(context, progress, work(progress))
+
+    def invoke(self, context, event):
+        engine_progress = self._engine_progress()
+        if bpy.app.background or context.window is None or engine_progress is None:
+            return self.execute(context)
+        status = dependency_status(refresh=True)
+        if not status.ok:
+            self.report({"ERROR"}, f"Stick Morph: {status.message()}")
+            return {"CANCELLED"}
+        self._apply_preferences(context)
+        timer = StageTimer()
+        try:
+            work = self.start(context, timer)
+        except StickMorphError as error:
+            self.report({"ERROR"}, f"Stick Morph: {error}")
+            return {"CANCELLED"}
+        self._job = BakeJob(work, engine_progress, timer).start()
+        wm = context.window_manager
+        self._timer = wm.event_timer_add(TIMER_SECONDS, window=context.window)
+        wm.modal_handler_add(self)
+        wm.progress_begin(0, 100)
+        self._show(context)
+        return {"RUNNING_MODAL"}
+
+    @staticmethod
+    def _engine_progress():
+        """A new stickmorph.Progress, or None when the module has none (or
+        is missing: execute reports that)."""
+        if not dependency_status().ok:
+            return None
+        from . import native
+        progress_type = getattr(native.load_engine(), "Progress", None)
+        return progress_type() if progress_type is not None else None
+
+    def _show(self, context):
+        context.window_manager.progress_update(self._job.percent())
+        workspace = getattr(context, "workspace", None)
+        if workspace is not None:
+            workspace.status_text_set(self._job.status_text())
+
+    def _end(self, context):
+        wm = context.window_manager
+        if getattr(self, "_timer", None) is not None:
+            wm.event_timer_remove(self._timer)
+            self._timer = None
+        wm.progress_end()
+        workspace = getattr(context, "workspace", None)
+        if workspace is not None:
+            workspace.status_text_set(None)
+
+    def modal(self, context, event):
+        job = self._job
+        if event.type in {"ESC", "RIGHTMOUSE"} and event.value == "PRESS":
+            job.cancel()
+            self._show(context)
+            return {"RUNNING_MODAL"}
+        if event.type == "TIMER":
+            if job.running:
+                self._show(context)
+                return {"RUNNING_MODAL"}
+            return self._done(context)
+        if event.type in PASS_THROUGH:
+            return {"PASS_THROUGH"}
+        return {"RUNNING_MODAL"}
+
+    def _done(self, context):
+        job = self._job
+        self._end(context)
+        if job.cancelled:
+            self.report({"WARNING"}, f"Stick Morph: bake cancelled after {job.elapsed:.1f} s; nothing was changed")
+            return {"CANCELLED"}
+        if job.error is not None:
+            if isinstance(job.error, StickMorphError):
+                self.report({"ERROR"}, f"Stick Morph: {job.error}")
+                return {"CANCELLED"}
+            raise job.error  # a bug, raised as execute would have raised it
+        try:
+            with Progress(context, job.timer) as progress:
+                return self.finish(context, progress, job.result)
+        except StickMorphError as error:
+            self.report({"ERROR"}, f"Stick Morph: {error}")
+            return {"CANCELLED"}
+
+    def cancel(self, context):
+        # Blender ends a running modal operator (a file loaded, the window
+        # closed): stop the worker before the data it read goes away.
+        job = getattr(self, "_job", None)
+        if job is not None:
+            job.cancel()
+            job.wait()
+            self._end(context)
+
+
+class STICKMORPH_OT_bake(ModalBake, bpy.types.Operator):
     """Bake a morph between two edge meshes (source, then target active) into a new object with shape keys, free of self-intersection unless Motion is Linear"""
     bl_idname = "object.stick_morph_bake"
     bl_label = "Bake Stick Morph"
@@ -173,10 +299,10 @@ class STICKMORPH_OT_bake(BakeExecute, bpy.types.Operator):
         from . import ui
         ui.draw_operator(self.layout, self)
 
-    def run(self, context, progress):
+    def start(self, context, progress):
         from . import baking, core
 
-        started = time.perf_counter()
+        self._started = time.perf_counter()
         settings = bake_settings(self)
         source, target = resolve_pair(context, self.source.strip(), self.target.strip())
         # Redo re-runs with these names even if the selection changed meanwhile.
@@ -188,15 +314,30 @@ class STICKMORPH_OT_bake(BakeExecute, bpy.types.Operator):
         source_groups = baking.vertex_groups(source, is_pin_group)
         target_groups = baking.vertex_groups(target, is_pin_group)
         progress.stage("read", 5)
-        # Checks, then by index or matched (settings.correspondence).
-        prepared = core.prepare_pair(source_world, source_edges, source_faces, source.name,
-                                     target_world, target_edges, target_faces, target.name, settings,
-                                     source_groups, target_groups)
-        progress.stage("check", 15)
-        # By index, or matched if Automatic's morph by index finds the pair
-        # incompatible that way (the bake's one compatibility check).
-        prepared, morph = core.morph_pair(prepared, settings)
-        progress.stage("morph", 60)
+        source_name, target_name = source.name, target.name
+
+        def work(timer):  # free of bpy: the worker thread of a modal bake
+            # Checks, then by index or matched (settings.correspondence).
+            prepared = core.prepare_pair(source_world, source_edges, source_faces, source_name,
+                                         target_world, target_edges, target_faces, target_name, settings,
+                                         source_groups, target_groups)
+            timer.stage("check", 15)
+            # By index, or matched if Automatic's morph by index finds the pair
+            # incompatible that way (the bake's one compatibility check).
+            prepared, morph = core.morph_pair(prepared, settings)
+            timer.stage("morph", 60)
+            return settings, prepared, morph
+
+        return work
+
+    def finish(self, context, progress, computed):
+        from . import baking, core
+
+        settings, prepared, morph = computed
+        started = self._started
+        # By name: a modal bake's objects are looked up again after the
+        # engine ran (the modal handler keeps the scene as it was meanwhile).
+        source, target = resolve_pair(context, self.source, self.target)
         previous = baking.previous_results(source.name, target.name)
         count = settings.frame_count
 
@@ -228,6 +369,7 @@ class STICKMORPH_OT_bake(BakeExecute, bpy.types.Operator):
             scene_settings.last_milliseconds = milliseconds
             scene_settings.last_motion = motion_short
             scene_settings.last_correspondence = match_short
+            scene_settings.last_stages = progress.summary()
         # Several parts (loose parts, dots) are said; one part is not.
         parts = core.parts_summary(core.figure_parts(len(prepared.source_xy), prepared.edges))
         text = (f"Stick Morph: '{result.name}': {len(prepared.source_xy)} vertices, "

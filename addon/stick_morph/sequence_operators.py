@@ -8,6 +8,8 @@
 As with the pair bake, everything is read and checked, and the engine runs,
 before any data is created; an error is an ERROR report with the scene
 unchanged, and execute depends only on its properties and the file (redo).
+Bake Key Poses runs modal from the GUI, cancellable with Esc, as the pair
+bake does (operators.ModalBake).
 """
 
 import json
@@ -17,7 +19,7 @@ import bpy
 from bpy.props import IntProperty, StringProperty
 
 from .common import BakeSettings, StickMorphError, is_pin_group
-from .operators import BakeExecute, show_in_status_bar
+from .operators import BakeExecute, ModalBake, show_in_status_bar
 from .properties import REBAKE_OPTIONS, SEQUENCE_OPTIONS, key_pose_properties, option_properties
 
 KEY_FRAME_PROPERTY = "stick_morph_key_frame"
@@ -36,7 +38,7 @@ def _settings(op, names, frame_start, **fixed):
 
 
 def _finish(op, context, result, previous, created, settings, first_frame, frame_count, sequence, names,
-            milliseconds, what, loop=False):
+            milliseconds, what, loop=False, stages=None):
     """Replaces the previous result, sets the frame range and the panel's
     last-bake box, makes the result active and reports per segment."""
     from . import baking, sequence as seq
@@ -60,6 +62,8 @@ def _finish(op, context, result, previous, created, settings, first_frame, frame
         scene_settings.last_milliseconds = milliseconds
         scene_settings.last_motion = f"Rigid, {len(names)} keys"
         scene_settings.last_correspondence = "Matched" if sequence.matched else "By index"
+        if stages is not None:
+            scene_settings.last_stages = stages
     text = (f"Stick Morph: '{result.name}': {what} of {len(names)} keys, {vertices} vertices, "
             f"{len(sequence.segments)} segments, {steiner} Steiner vertices, {frame_count} frames "
             f"(frames {first_frame}-{first_frame + frame_count - 1}), {milliseconds:.0f} ms; {match}")
@@ -69,7 +73,7 @@ def _finish(op, context, result, previous, created, settings, first_frame, frame
     show_in_status_bar(context, text)
 
 
-class STICKMORPH_OT_bake_sequence(BakeExecute, bpy.types.Operator):
+class STICKMORPH_OT_bake_sequence(ModalBake, bpy.types.Operator):
     """Bake one morph through the selected edge meshes as key poses (ordered by name, or a collection's objects in its order) into a new object with shape keys, free of self-intersection"""
     bl_idname = "object.stick_morph_bake_sequence"
     bl_label = "Bake Key Poses"
@@ -134,10 +138,10 @@ class STICKMORPH_OT_bake_sequence(BakeExecute, bpy.types.Operator):
             raise StickMorphError("an object is a key twice: " + ", ".join(f"'{obj.name}'" for obj in objects))
         return objects
 
-    def run(self, context, progress):
-        from . import baking, core, sequence
+    def start(self, context, progress):
+        from . import baking, sequence
 
-        started = time.perf_counter()
+        self._started = time.perf_counter()
         objects = self._key_objects(context)
         names = [obj.name for obj in objects]
         self.keys = json.dumps(names)
@@ -152,12 +156,22 @@ class STICKMORPH_OT_bake_sequence(BakeExecute, bpy.types.Operator):
         data = [baking.mesh_world_data(obj, depsgraph) for obj in objects]
         groups = [baking.vertex_groups(obj, is_pin_group) for obj in objects]
         progress.stage("read", 5)
-        prepared = sequence.prepare_keys([d[0] for d in data], [d[1] for d in data], [d[2] for d in data], names,
-                                         settings, groups)
-        progress.stage("check", 15)
-        result = sequence.morph_keys(prepared, settings, frame_count, keys_at, self.loop,
-                                     [self.hold] * len(names) if self.hold else None)
-        progress.stage("morph", 70)
+        loop, hold = self.loop, [self.hold] * len(names) if self.hold else None
+
+        def work(timer):  # free of bpy: the worker thread of a modal bake
+            prepared = sequence.prepare_keys([d[0] for d in data], [d[1] for d in data], [d[2] for d in data],
+                                             names, settings, groups)
+            timer.stage("check", 15)
+            result = sequence.morph_keys(prepared, settings, frame_count, keys_at, loop, hold)
+            timer.stage("morph", 70)
+            return names, settings, frames, frame_count, prepared, result
+
+        return work
+
+    def finish(self, context, progress, computed):
+        from . import baking, core
+
+        names, settings, frames, frame_count, prepared, result = computed
         tag = json.dumps(names)
         previous = baking.results_tagged(SEQUENCE_ROLE, KEYS_TAG, tag)
         try:
@@ -168,7 +182,8 @@ class STICKMORPH_OT_bake_sequence(BakeExecute, bpy.types.Operator):
             raise StickMorphError(f"building the result failed: {error}") from error
         progress.stage("build", 100)
         _finish(self, context, obj, previous, created, settings, frames[0], frame_count, result, names,
-                (time.perf_counter() - started) * 1000.0, "key poses", loop=self.loop)
+                (time.perf_counter() - self._started) * 1000.0, "key poses", loop=self.loop,
+                stages=progress.summary())
         return {"FINISHED"}
 
 
@@ -270,7 +285,7 @@ class STICKMORPH_OT_rebake_shape_keys(BakeExecute, bpy.types.Operator):
             raise StickMorphError(f"building the result failed: {error}") from error
         progress.stage("build", 100)
         _finish(self, context, new, previous, created, settings, first, frame_count, result, names,
-                (time.perf_counter() - started) * 1000.0, "shape-key poses")
+                (time.perf_counter() - started) * 1000.0, "shape-key poses", stages=progress.summary())
         return {"FINISHED"}
 
 

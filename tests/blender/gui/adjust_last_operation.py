@@ -19,7 +19,8 @@ window is up:
    transform of its own. Their world vertices are computed here, from the
    matrices composed by hand, and compared with Blender's matrix_world.
 3. Bakes with frame_count=N in the 3D Viewport's context, as a click does
-   (INVOKE_DEFAULT, registered, one undo step), and checks the result: frame
+   (INVOKE_DEFAULT: modal, the engine in a worker thread; registered, one
+   undo step), waits for it to finish and checks the result: frame
    start is the source in world space, frame start + N - 1 the target.
 4. Adjusts the last operation the way the redo panel does: it sets Frames to
    M on the registered operator (window_manager.operators[-1], the operator
@@ -273,12 +274,18 @@ def steps(args):
     frame_start = 3
     yield 0.3
 
-    # The bake, as a click on the panel's Bake button runs it.
+    # The bake, as a click on the panel's Bake button runs it: modal (issue
+    # 29), the engine in a worker thread, until the result is built.
+    registered = len(wm.operators)
     with bpy.context.temp_override(window=window, area=area, region=region):
         result = bpy.ops.object.stick_morph_bake("INVOKE_DEFAULT", True, frame_start=frame_start,
                                                  frame_count=args.frames)
-    check(result == {"FINISHED"}, f"the bake returned {result}")
-    log(f"baked with Frames = {args.frames}")
+    check(result in ({"FINISHED"}, {"RUNNING_MODAL"}), f"the bake returned {result}")
+    for _ in range(600):
+        if len(wm.operators) > registered:
+            break
+        yield 0.1
+    log(f"baked with Frames = {args.frames} ({'modal' if result == {'RUNNING_MODAL'} else 'at once'})")
     yield 0.5
 
     check(len(wm.operators) > 0 and wm.operators[-1].bl_idname == OPERATOR,

@@ -12,10 +12,12 @@
 #   --out      where the screenshot goes (default: out/gui/blender<M.m>/)
 #
 # Runs tests/blender/gui/adjust_last_operation.py (Adjust Last Operation on the bake
-# operator) in `blender --factory-startup` without -b, on a 1600x900 Xvfb
-# screen, inside scripts/blender_sandbox.py. Needs the Debian packages xvfb
-# and xauth. Exits with the test's code: 0 passed, 1 failed, 2 timed out
-# (also when Blender hangs: `timeout` ends it). Prints the screenshot's path.
+# operator) and tests/blender/gui/cancel_bake.py (Esc cancels a modal bake and
+# leaves the scene unchanged, issue 29), each in its own `blender
+# --factory-startup` without -b, on a 1600x900 Xvfb screen, inside
+# scripts/blender_sandbox.py. Needs the Debian packages xvfb and xauth. Exits
+# with the first failing test's code: 0 passed, 1 failed, 2 timed out (also
+# when Blender hangs: `timeout` ends it). Prints the screenshot's path.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../../.."
 
@@ -36,20 +38,38 @@ for tool in xvfb-run xauth; do
   command -v "$tool" >/dev/null || { echo "run_gui_tests.sh: $tool is missing (apt-get install xvfb xauth)" >&2; exit 2; }
 done
 
-printf '\n==== %s ====\n' "GUI test: Adjust Last Operation ($("$BLENDER" --version 2>/dev/null | head -n 1))"
+version=$("$BLENDER" --version 2>/dev/null | head -n 1)
 # Blender's own exit code is not the test's (a crash or a hang must not pass):
-# adjust_last_operation.py ends the process itself with os._exit, 0 only when every check
+# each script ends the process itself with os._exit, 0 only when every check
 # passed; the outer timeout is a second watchdog for a Blender that never
 # runs Python at all.
-status=0
-timeout --kill-after=10 300 \
-  /usr/bin/python3 scripts/blender_sandbox.py "${sandbox[@]}" -- \
-  xvfb-run -a -s "-screen 0 1600x900x24" \
-  "$BLENDER" --factory-startup --enable-event-simulate --python-exit-code 1 \
-  --python tests/blender/gui/adjust_last_operation.py -- "${package[@]}" "${out[@]}" || status=$?
+run_gui_test() {  # SCRIPT TITLE [script arguments]
+  local script=$1 title=$2
+  shift 2
+  printf '\n==== %s ====\n' "GUI test: $title ($version)"
+  timeout --kill-after=10 300 \
+    /usr/bin/python3 scripts/blender_sandbox.py "${sandbox[@]}" -- \
+    xvfb-run -a -s "-screen 0 1600x900x24" \
+    "$BLENDER" --factory-startup --enable-event-simulate --python-exit-code 1 \
+    --python "tests/blender/gui/$script" -- "${package[@]}" "$@"
+}
+status=0 passed=0 failed=0
+for test in adjust_last_operation cancel_bake; do
+  code=0
+  case $test in
+    adjust_last_operation) run_gui_test adjust_last_operation.py "Adjust Last Operation" "${out[@]}" || code=$? ;;
+    cancel_bake) run_gui_test cancel_bake.py "Esc cancels a bake" || code=$? ;;
+  esac
+  if [[ $code -eq 0 ]]; then
+    passed=$((passed + 1))
+  else
+    failed=$((failed + 1))
+    [[ $status -ne 0 ]] || status=$code
+  fi
+done
 if [[ $status -eq 0 ]]; then
-  echo "gui: 1 passed, 0 failed"
+  echo "gui: $passed passed, 0 failed"
 else
-  echo "gui: 0 passed, 1 failed (exit $status)"
+  echo "gui: $passed passed, $failed failed (exit $status)"
 fi
 exit "$status"

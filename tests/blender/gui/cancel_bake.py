@@ -1,0 +1,242 @@
+"""GUI test: Esc cancels a long bake and leaves the scene as it was (issue 29).
+
+    /usr/bin/python3 scripts/blender_sandbox.py -- xvfb-run -a -s "-screen 0 1600x900x24" \\
+        blender --factory-startup --enable-event-simulate --python-exit-code 1 \\
+        --python tests/blender/gui/cancel_bake.py -- [--package ZIP] [--vertices N] [--timeout SECONDS]
+
+(tests/blender/gui/run_gui_tests.sh runs it after adjust_last_operation.py.)
+Blender runs WITHOUT -b, so the bake operator's invoke runs modal: the engine
+in a worker thread, a window-manager timer showing its stage. Steps, each run
+from a timer once the window is up:
+
+1. Installs and enables the package built for this Blender.
+2. Makes two edge meshes of N vertices (default 30000), a wave into another
+   wave, and records everything in the file (objects, meshes, shape keys,
+   actions, node groups, materials, collections, selection, frame range).
+3. Bakes in the 3D Viewport's context as the Bake button does
+   (INVOKE_DEFAULT): the operator must answer RUNNING_MODAL.
+4. Waits until the bake's job (bake_job.last_started()) is triangulating,
+   then presses Esc (window.event_simulate) and waits for the job to end.
+5. Checks: the job was cancelled and its engine call raised
+   stickmorph.CancelledError; the operator was not registered (a cancelled
+   operator leaves no Adjust Last Operation); everything recorded in step 2
+   is as it was; where Blender can read it from Python (not 3.4), the Info
+   log says the bake was cancelled. Prints how long the cancel took to take
+   effect.
+
+Exits with os._exit: 0 if every check passed, 1 on a failed check or error,
+2 if the watchdog's timeout ran out.
+"""
+
+import argparse
+import importlib
+import os
+import sys
+import threading
+import time
+import traceback
+
+import bpy
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(HERE)))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+import blender_sandbox  # noqa: E402
+
+OPERATOR = "OBJECT_OT_stick_morph_bake"
+
+
+def parse_args():
+    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    parser = argparse.ArgumentParser(prog="cancel_bake.py", description=__doc__.split("\n\n")[0])
+    parser.add_argument("--package", help="the package to install (default: the newest in dist/ for this Blender)")
+    parser.add_argument("--vertices", type=int, default=30000, help="vertices of each figure (default 30000)")
+    parser.add_argument("--timeout", type=float, default=240, help="watchdog, seconds (default 240)")
+    return parser.parse_args(argv)
+
+
+def log(message):
+    print(f"cancel_bake.py: {message}", flush=True)
+
+
+class CheckFailed(Exception):
+    pass
+
+
+def check(condition, message):
+    if not condition:
+        raise CheckFailed(message)
+
+
+def view3d(window):
+    areas = [a for a in window.screen.areas if a.type == "VIEW_3D"]
+    check(areas, "the window has no 3D Viewport")
+    area = max(areas, key=lambda a: a.width * a.height)
+    return area, {r.type: r for r in area.regions}["WINDOW"]
+
+
+def make_mesh(name, xy, edges, x_offset):
+    coords = np.zeros((len(xy), 3))
+    coords[:, :2] = xy
+    coords[:, 0] += x_offset
+    mesh = bpy.data.meshes.new(name)
+    mesh.vertices.add(len(coords))
+    mesh.vertices.foreach_set("co", coords.ravel())
+    mesh.edges.add(len(edges))
+    mesh.edges.foreach_set("vertices", edges.ravel())
+    mesh.update()
+    obj = bpy.data.objects.new(name, mesh)
+    bpy.context.scene.collection.objects.link(obj)
+    return obj
+
+
+def file_state():
+    """Everything a bake could change in the file."""
+    scene = bpy.context.scene
+    view_layer = bpy.context.view_layer
+    return {
+        "objects": sorted((o.name, o.type, o.data.name if o.data else None, o.select_get(),
+                           tuple(m.name for m in o.modifiers)) for o in bpy.data.objects),
+        "meshes": sorted((m.name, len(m.vertices), len(m.edges), m.shape_keys is not None) for m in bpy.data.meshes),
+        "shape_keys": sorted(k.name for k in bpy.data.shape_keys),
+        "actions": sorted(a.name for a in bpy.data.actions),
+        "node_groups": sorted(g.name for g in bpy.data.node_groups),
+        "materials": sorted(m.name for m in bpy.data.materials),
+        "collections": sorted((c.name, tuple(sorted(o.name for o in c.objects))) for c in bpy.data.collections),
+        "active": view_layer.objects.active.name if view_layer.objects.active else None,
+        "frames": (scene.frame_start, scene.frame_end, scene.frame_current),
+        "last_result": scene.stick_morph.last_result,
+    }
+
+
+def steps(args):
+    wm = bpy.context.window_manager
+    while not wm.windows or wm.windows[0].screen is None:
+        yield 0.2
+    window = wm.windows[0]
+    yield 0.5
+    # 4.x's first-start Quick Setup takes every event until it is closed.
+    window.event_simulate(type="ESC", value="PRESS", x=window.width // 2, y=window.height // 2)
+    window.event_simulate(type="ESC", value="RELEASE", x=window.width // 2, y=window.height // 2)
+    yield 0.5
+    log(f"Blender {bpy.app.version_string}, window {window.width}x{window.height}")
+    check(not bpy.app.background, "Blender runs in the background (-b): this test needs a window")
+    sandbox = blender_sandbox.check_sandboxed()
+    package = args.package or blender_sandbox.find_package(os.path.join(ROOT, "dist"))
+    with bpy.context.temp_override(window=window):
+        name = blender_sandbox.install_package(package)
+    log(f"installed {package} as {name} in {sandbox}")
+    check(hasattr(bpy.types, OPERATOR), f"{OPERATOR} is not registered")
+    bake_job = importlib.import_module(f"{name}.bake_job")
+    engine = importlib.import_module(f"{name}.native").load_engine()
+    yield 0.5
+
+    # The figures: graphs of functions of x, so valid and compatible.
+    n = args.vertices
+    x = np.linspace(0.0, 100.0, n)
+    source_xy = np.stack([x, 3 * np.sin(0.7 * x) + 1.5 * np.sin(2.3 * x)], axis=1)
+    target_xy = np.stack([x, -2 * np.cos(0.3 * x) + 0.5 * np.sin(1.1 * x)], axis=1)
+    edges = np.stack([np.arange(n - 1), np.arange(1, n)], axis=1).astype(np.int32)
+    area, region = view3d(window)
+    with bpy.context.temp_override(window=window, area=area, region=region):
+        source = make_mesh("Source", source_xy, edges, 0.0)
+        target = make_mesh("Target", target_xy, edges, 150.0)
+        for obj in bpy.context.view_layer.objects:
+            obj.select_set(obj in (source, target))
+        bpy.context.view_layer.objects.active = target
+        bpy.context.view_layer.update()
+    before = file_state()
+    registered = len(wm.operators)
+    # The viewport's first drawing of the meshes (seconds with llvmpipe
+    # under Xvfb) would otherwise hold up the event loop while the bake
+    # runs, and with it the Esc: wait until the loop turns quickly.
+    last, quick = time.monotonic(), 0
+    for _ in range(3000):
+        yield 0.01
+        now = time.monotonic()
+        quick = quick + 1 if now - last < 0.1 else 0
+        last = now
+        if quick == 5:
+            break
+
+    with bpy.context.temp_override(window=window, area=area, region=region):
+        result = bpy.ops.object.stick_morph_bake("INVOKE_DEFAULT", True, frame_count=50)
+    check(result == {"RUNNING_MODAL"}, f"the bake returned {result}, not RUNNING_MODAL")
+    job = bake_job.last_started()
+    check(job is not None, "the modal bake started no job")
+    started = time.monotonic()
+    while job.running and job.stage()[0] != "triangulate" and time.monotonic() - started < 120:
+        yield 0.01
+    check(job.running, f"the bake ended before it could be cancelled ({job.timer.summary()}); use more --vertices")
+    log(f"bake running: {job.status_text()!r} after {time.monotonic() - started:.2f} s")
+    yield 0.3  # the status text shown for a while (for a screenshot by hand)
+    check(job.running, "the bake ended while triangulating; use more --vertices")
+    pressed = time.monotonic()
+    x, y = area.x + area.width // 2, area.y + area.height // 2
+    window.event_simulate(type="ESC", value="PRESS", x=x, y=y)
+    window.event_simulate(type="ESC", value="RELEASE", x=x, y=y)
+    received = None  # when the operator's modal handler had the Esc (it cancels the job)
+    while job.running and time.monotonic() - pressed < 60:
+        if received is None and job.cancelled:
+            received = time.monotonic() - pressed
+        yield 0.01
+    stopped = time.monotonic() - pressed
+    check(not job.running, "the bake's worker still runs 60 s after Esc")
+    # The operator ends at its next timer event after the worker.
+    yield 0.5
+    log(f"Esc took effect in {stopped * 1000:.0f} ms: the operator had it after "
+        f"{(received if received is not None else stopped) * 1000:.0f} ms, the engine stopped "
+        f"{(stopped - (received or stopped)) * 1000:.0f} ms later (engine stages {job.progress.summary()!r})")
+    check(job.cancelled, "the job was not cancelled by Esc")
+    check(isinstance(job.error, engine.CancelledError), f"the engine call ended with {job.error!r}, not CancelledError")
+    check(len(wm.operators) == registered, "the cancelled bake was registered (it would have an Adjust Last Operation)")
+    after = file_state()
+    for key in before:
+        check(after[key] == before[key], f"{key} changed by the cancelled bake: {before[key]!r} -> {after[key]!r}")
+    log("the scene is exactly as before the bake")
+    # The Info log (read last: it writes a text block). Blender 3.4 has no
+    # operator that reads it.
+    if "reports_to_textblock" in dir(bpy.ops.ui):
+        with bpy.context.temp_override(window=window, area=area, region=region):
+            bpy.ops.ui.reports_to_textblock()
+        text = bpy.data.texts[-1].as_string()
+        check("Stick Morph: bake cancelled" in text, f"no cancel report in the Info log:\n{text[-2000:]}")
+        log("the Info log says the bake was cancelled")
+    else:
+        log(f"Blender {bpy.app.version_string} cannot read the Info log from Python: the report is not checked")
+
+
+def finish(code):
+    sys.stdout.flush()
+    sys.stderr.flush()
+    os._exit(code)
+
+
+def main():
+    args = parse_args()
+    bpy.context.preferences.view.show_splash = False
+    watchdog = threading.Timer(args.timeout, lambda: (log(f"timed out after {args.timeout} s"), finish(2)))
+    watchdog.daemon = True
+    watchdog.start()
+    runner = steps(args)
+
+    def tick():
+        try:
+            delay = next(runner)
+        except StopIteration:
+            log("PASSED: Esc cancelled the bake while it triangulated; nothing changed")
+            finish(0)
+        except CheckFailed as failure:
+            log(f"FAILED: {failure}")
+            finish(1)
+        except Exception:
+            traceback.print_exc()
+            log("FAILED: error (traceback above)")
+            finish(1)
+        return delay
+
+    bpy.app.timers.register(tick, first_interval=1.0)
+
+
+main()
