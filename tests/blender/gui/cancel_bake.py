@@ -195,9 +195,14 @@ def steps(args):
     for key in before:
         check(after[key] == before[key], f"{key} changed by the cancelled bake: {before[key]!r} -> {after[key]!r}")
     log("the scene is exactly as before the bake")
-    # The Info log (read last: it writes a text block). Blender 3.4 has no
-    # operator that reads it.
-    if "reports_to_textblock" in dir(bpy.ops.ui):
+    # The Info log (read last: it writes a text block), where an operator
+    # reads it (not in 3.4).
+    try:
+        bpy.ops.ui.reports_to_textblock.get_rna_type()
+        readable = True
+    except (AttributeError, KeyError, RuntimeError):
+        readable = False
+    if readable:
         with bpy.context.temp_override(window=window, area=area, region=region):
             bpy.ops.ui.reports_to_textblock()
         text = bpy.data.texts[-1].as_string()
