@@ -369,7 +369,9 @@ class STICKMORPH_OT_bake(ModalBake, bpy.types.Operator):
             scene_settings.last_milliseconds = milliseconds
             scene_settings.last_motion = motion_short
             scene_settings.last_correspondence = match_short
-            scene_settings.last_stages = progress.summary()
+            # The engine's call is the part of "morph" spent in the module
+            # (issue 29's split of a bake between the engine and Blender).
+            scene_settings.last_stages = f"{progress.summary()}, engine {morph.engine_ms:.0f} ms"
         # Several parts (loose parts, dots) are said; one part is not.
         parts = core.parts_summary(core.figure_parts(len(prepared.source_xy), prepared.edges))
         text = (f"Stick Morph: '{result.name}': {len(prepared.source_xy)} vertices, "

@@ -59,7 +59,8 @@ class StickMorphSceneSettings(bpy.types.PropertyGroup):
         "last_milliseconds": FloatProperty(name="Milliseconds", options=set()),
         # The last bake's stages and their times, "read 12 ms, check 30 ms,
         # morph 3100 ms, build 900 ms" (engine against Blender, for the
-        # benchmark; operators.Progress.summary()).
+        # benchmark; operators.Progress.summary()); the pair bake adds
+        # "engine 2800 ms", the part of morph spent in the module's call.
         "last_stages": StringProperty(name="Stages", options=set()),
     }
 
