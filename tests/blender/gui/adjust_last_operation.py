@@ -43,18 +43,17 @@ import ctypes
 import os
 import struct
 import sys
-import threading
-import traceback
 import zlib
 
 import bpy
 import numpy as np
 from mathutils import Matrix, Vector
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(HERE)))
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-import blender_sandbox  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import gui_driver  # noqa: E402
+from gui_driver import ROOT, blender_sandbox, check, view3d  # noqa: E402
+
+log = gui_driver.logger("adjust_last_operation.py")
 
 OPERATOR = "OBJECT_OT_stick_morph_bake"
 RELATIVE_TOLERANCE = 1e-5
@@ -92,7 +91,7 @@ def target_basis():
 
 
 def parse_args():
-    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    argv = gui_driver.script_args()
     parser = argparse.ArgumentParser(prog="adjust_last_operation.py", description=__doc__.split("\n\n")[0])
     parser.add_argument("--package", help="the package to install (default: the newest in dist/ for this Blender)")
     parser.add_argument("--out", help="folder for the screenshot (default: out/gui/blender<M.m>/)")
@@ -106,17 +105,6 @@ def parse_args():
     return args
 
 
-def log(message):
-    print(f"adjust_last_operation.py: {message}", flush=True)
-
-
-class CheckFailed(Exception):
-    pass
-
-
-def check(condition, message):
-    if not condition:
-        raise CheckFailed(message)
 
 
 # ------------------------------------------------------------------ scene ----
@@ -228,13 +216,6 @@ def check_result(context, frame_start, frames, source_world, target_world, size,
 
 # ---------------------------------------------------------------- window ----
 
-def view3d(window):
-    """(area, its WINDOW region, its UI region) of the window's largest 3D Viewport."""
-    areas = [a for a in window.screen.areas if a.type == "VIEW_3D"]
-    check(areas, "the window has no 3D Viewport")
-    area = max(areas, key=lambda a: a.width * a.height)
-    regions = {r.type: r for r in area.regions}
-    return area, regions["WINDOW"], regions.get("UI")
 
 
 def steps(args):
@@ -439,37 +420,9 @@ def screenshot(window, path):
     return path
 
 
-def finish(code):
-    sys.stdout.flush()
-    sys.stderr.flush()
-    os._exit(code)
-
-
 def main():
     args = parse_args()
-    # No splash screen over the window (these are the sandbox's preferences).
-    bpy.context.preferences.view.show_splash = False
-    watchdog = threading.Timer(args.timeout, lambda: (log(f"timed out after {args.timeout} s"), finish(2)))
-    watchdog.daemon = True
-    watchdog.start()
-    runner = steps(args)
-
-    def tick():
-        try:
-            delay = next(runner)
-        except StopIteration:
-            log("PASSED: Adjust Last Operation re-bakes in world space with the new frame count")
-            finish(0)
-        except CheckFailed as failure:
-            log(f"FAILED: {failure}")
-            finish(1)
-        except Exception:
-            traceback.print_exc()
-            log("FAILED: error (traceback above)")
-            finish(1)
-        return delay
-
-    bpy.app.timers.register(tick, first_interval=1.0)
+    gui_driver.run(steps(args), args.timeout, log, "Adjust Last Operation re-bakes in world space with the new frame count")
 
 
 main()

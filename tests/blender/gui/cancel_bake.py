@@ -32,23 +32,22 @@ import argparse
 import importlib
 import os
 import sys
-import threading
 import time
-import traceback
 
 import bpy
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(HERE)))
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-import blender_sandbox  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import gui_driver  # noqa: E402
+from gui_driver import ROOT, blender_sandbox, check, view3d  # noqa: E402
+
+log = gui_driver.logger("cancel_bake.py")
 
 OPERATOR = "OBJECT_OT_stick_morph_bake"
 
 
 def parse_args():
-    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    argv = gui_driver.script_args()
     parser = argparse.ArgumentParser(prog="cancel_bake.py", description=__doc__.split("\n\n")[0])
     parser.add_argument("--package", help="the package to install (default: the newest in dist/ for this Blender)")
     parser.add_argument("--vertices", type=int, default=30000, help="vertices of each figure (default 30000)")
@@ -56,24 +55,8 @@ def parse_args():
     return parser.parse_args(argv)
 
 
-def log(message):
-    print(f"cancel_bake.py: {message}", flush=True)
 
 
-class CheckFailed(Exception):
-    pass
-
-
-def check(condition, message):
-    if not condition:
-        raise CheckFailed(message)
-
-
-def view3d(window):
-    areas = [a for a in window.screen.areas if a.type == "VIEW_3D"]
-    check(areas, "the window has no 3D Viewport")
-    area = max(areas, key=lambda a: a.width * a.height)
-    return area, {r.type: r for r in area.regions}["WINDOW"]
 
 
 def make_mesh(name, xy, edges, x_offset):
@@ -138,7 +121,7 @@ def steps(args):
     source_xy = np.stack([x, 3 * np.sin(0.7 * x) + 1.5 * np.sin(2.3 * x)], axis=1)
     target_xy = np.stack([x, -2 * np.cos(0.3 * x) + 0.5 * np.sin(1.1 * x)], axis=1)
     edges = np.stack([np.arange(n - 1), np.arange(1, n)], axis=1).astype(np.int32)
-    area, region = view3d(window)
+    area, region, _ = view3d(window)
     with bpy.context.temp_override(window=window, area=area, region=region):
         source = make_mesh("Source", source_xy, edges, 0.0)
         target = make_mesh("Target", target_xy, edges, 150.0)
@@ -212,36 +195,9 @@ def steps(args):
         log(f"Blender {bpy.app.version_string} cannot read the Info log from Python: the report is not checked")
 
 
-def finish(code):
-    sys.stdout.flush()
-    sys.stderr.flush()
-    os._exit(code)
-
-
 def main():
     args = parse_args()
-    bpy.context.preferences.view.show_splash = False
-    watchdog = threading.Timer(args.timeout, lambda: (log(f"timed out after {args.timeout} s"), finish(2)))
-    watchdog.daemon = True
-    watchdog.start()
-    runner = steps(args)
-
-    def tick():
-        try:
-            delay = next(runner)
-        except StopIteration:
-            log("PASSED: Esc cancelled the bake while it triangulated; nothing changed")
-            finish(0)
-        except CheckFailed as failure:
-            log(f"FAILED: {failure}")
-            finish(1)
-        except Exception:
-            traceback.print_exc()
-            log("FAILED: error (traceback above)")
-            finish(1)
-        return delay
-
-    bpy.app.timers.register(tick, first_interval=1.0)
+    gui_driver.run(steps(args), args.timeout, log, "Esc cancelled the bake while it triangulated; nothing changed")
 
 
 main()
