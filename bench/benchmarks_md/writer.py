@@ -62,7 +62,7 @@ def header_section(run):
     # A section re-measured later than the run (bench/benchmarks.sh's parts run
     # by hand, e.g. after a change that only they measure) says so here.
     for note in run.get("notes", []):
-        add("\n" + note + "\n")
+        add("\n" + note)
     repeat = run.get("repeat", 1)
     repeated = (f"Each (case, method) runs in a child process of its own (peak memory is that process's "
                 f"`ru_maxrss`), with an address-space limit of {run['memory_limit_mib']} MiB and a time limit; "
