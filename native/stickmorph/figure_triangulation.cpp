@@ -11,6 +11,7 @@
 #include "stickmorph/decomposition.h"
 #include "stickmorph/exact_predicates.h"
 #include "stickmorph/internal/annulus_cut.h"
+#include "stickmorph/internal/compatible_improvement.h"
 #include "stickmorph/internal/geometry.h"
 #include "stickmorph/internal/part_bridges.h"
 #include "stickmorph/internal/stopwatch.h"
@@ -54,6 +55,7 @@ std::vector<Vec2> enclosure_polygon(const StickFigure& source, const StickFigure
 }
 
 std::string face_label(int face) { return "face " + std::to_string(face); }
+
 
 using internal::Clock;
 using internal::ms_since;
@@ -218,6 +220,29 @@ FigureTriangulation triangulate_at_scale(const CompatiblePair& pair, const Figur
   // Steiner vertices follow the figure and the enclosure.
   result.steiner_vertices = int(result.source.size()) - n - k;
   poll_cancellation();
+  if (options.improvement_rounds > 0) {
+    // Issue 30: flips legal in both embeddings and smoothing, across the
+    // faces' seams too; the figure's edges are never flipped, the
+    // enclosure and the figure's vertices never move.
+    stage_start = Clock::now();
+    std::vector<std::pair<int, int>> figure_edges;
+    for (const Edge& e : source.edges) figure_edges.emplace_back(e[0], e[1]);
+    internal::CompatibleImprovementStats improvement;
+    internal::CompatibleImprovementOptions improvement_options;
+    improvement_options.rounds = options.improvement_rounds;
+    // Refinement's budget: no more than refinement_share of the figure's
+    // vertex count in all, the faces' own Steiner vertices included, and
+    // as much again for triangles still below 2 degrees after a round.
+    const int steiner_now = int(result.source.size()) - n - k;
+    improvement_options.steiner_budget = std::max(0, int(options.refinement_share * n) - steiner_now);
+    improvement_options.rescue_budget = int(options.refinement_share * n);
+    internal::improve_compatible_triangulation(result.source, result.target, result.triangles, figure_edges, n + k,
+                                               improvement_options, &improvement);
+    result.steiner_vertices = int(result.source.size()) - n - k;
+    measured.improve_ms = ms_since(stage_start);
+    measured.flips = improvement.flips;
+    measured.refinement_steiner = improvement.added;
+  }
   stage_start = Clock::now();
   verify_figure_triangulation(result, source);
   measured.verify_ms = ms_since(stage_start);

@@ -41,6 +41,18 @@ struct FigureTriangulationOptions {
   SteinerMethod method = SteinerMethod::Improved;
   int enclosure_sides = 6;  ///< a regular hexagon, as in the paper (section 5)
   int smoothing_rounds = 10;
+  /// Rounds of flips legal in both embeddings and Steiner vertices moved
+  /// on the glued triangulation, for its smallest angle over both (issue
+  /// 30, internal/compatible_improvement.h); 0: the paper's triangulation,
+  /// which the barycentric method uses. The rigid method asks for them.
+  int improvement_rounds = 0;
+  /// With improvement_rounds: Steiner vertices that compatible refinement
+  /// may add, as a share of the figure's vertex count (the faces' own
+  /// included), and as many again for triangles still below 2 degrees.
+  /// 0: none. Measured in BENCHMARKS.md; not the default, because the
+  /// rigid morph places Steiner vertices by blended weights, and more of
+  /// them left its guide on letters drawn into other letters.
+  double refinement_share = 0;
   /// More points that the enclosure must contain besides both figures'
   /// vertices: the rigid morph's guide sampled over time (issue 12), so
   /// that a figure that reaches further on the way than at either end (a
@@ -60,6 +72,9 @@ struct FigureTriangulationStats {
   double cut_ms = 0;               ///< enclosure and annulus cut (step 3)
   double interior_faces_ms = 0;    ///< section 4 on every interior face (step 2)
   double exterior_face_ms = 0;     ///< section 4 on the cut-open exterior (step 3)
+  double improve_ms = 0;           ///< flips and smoothing of the glued result (issue 30)
+  int flips = 0;                   ///< edges flipped there
+  int refinement_steiner = 0;      ///< Steiner vertices added there (compatible refinement)
   double verify_ms = 0;            ///< verify_figure_triangulation of the glued result
   // A figure of several parts (issue 14) is bridged into one first.
   int parts = 1;                   ///< parts of the figure (figure_parts.h)
