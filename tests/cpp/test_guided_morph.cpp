@@ -19,6 +19,7 @@
 #include "stickmorph/errors.h"
 #include "stickmorph/frame_certificate.h"
 #include "stickmorph/frame_verification.h"
+#include "stickmorph/figure_triangulation.h"
 #include "stickmorph/guided_morph.h"
 #include "stickmorph/internal/morph_topology.h"
 #include "stickmorph/io/figure_io.h"
@@ -669,9 +670,19 @@ TEST_CASE("a rigid frame that rounding flipped is refined in long double before 
     if (i > 0) edges.push_back({i - 1, i});
   }
   const StickFigure from = make_stick_figure(source, edges), to = make_stick_figure(target, edges);
-  MorphStickFiguresOptions options;
-  options.frames = 50;
-  GuidedMorph morph = prepare_rigid_morph(from, to, options);
+  // The paper's triangulation (no improvement rounds) in an enclosure round
+  // the guide, with no similarity factored out: the rigid method's own
+  // triangulation is flipped and smoothed for its angles (issue 30) and no
+  // longer has a triangle that thin here.
+  const CompatiblePair pair = CompatiblePair::check(from, to);
+  const SimilarityMotion identity;
+  RigidGuide guide(from, to.vertices, identity);
+  FigureTriangulationOptions paper;
+  for (int j = 1; j < 16; ++j)
+    for (const Vec2& p : guide.at(j / 16.0)) paper.enclosed_points.push_back(p);
+  const FigureTriangulation triangulation = triangulate_figures(pair, paper);
+  GuidedMorph morph(triangulation, from, pair.source_decomposition(), to.vertices, identity, std::move(guide),
+                    WeightKind::MeanValue, Easing::None);
   int refined = 0;
   for (int f = 1; f < 49; ++f) {
     const GuidedFrame frame = morph.frame(f / 49.0, f, true, "");
