@@ -51,7 +51,7 @@ from mathutils import Matrix, Vector
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import gui_driver  # noqa: E402
-from gui_driver import ROOT, blender_sandbox, check, view3d  # noqa: E402
+from gui_driver import ROOT, check, view3d  # noqa: E402
 
 log = gui_driver.logger("adjust_last_operation.py")
 
@@ -222,26 +222,7 @@ def steps(args):
     """The test, one step per yield; a yielded number is the delay (seconds)
     before the next step, so Blender redraws and handles events in between."""
     wm = bpy.context.window_manager
-    while not wm.windows or wm.windows[0].screen is None:
-        yield 0.2
-    window = wm.windows[0]
-    yield 0.5
-    # Blender 4.x shows its first-start Quick Setup even when the splash is
-    # off; like any popup it takes every event until it is closed (Esc).
-    window.event_simulate(type="ESC", value="PRESS", x=window.width // 2, y=window.height // 2)
-    window.event_simulate(type="ESC", value="RELEASE", x=window.width // 2, y=window.height // 2)
-    yield 0.5
-    log(f"Blender {bpy.app.version_string}, Python {sys.version.split()[0]}, window "
-        f"{window.width}x{window.height}, background={bpy.app.background}")
-    check(not bpy.app.background, "Blender runs in the background (-b): this test needs a window")
-
-    sandbox = blender_sandbox.check_sandboxed()
-    package = args.package or blender_sandbox.find_package(os.path.join(ROOT, "dist"))
-    with bpy.context.temp_override(window=window):
-        name = blender_sandbox.install_package(package)
-    log(f"installed {package} as {name} in {sandbox}")
-    check(hasattr(bpy.types, OPERATOR), f"{OPERATOR} is not registered")
-    yield 0.5
+    window, _ = yield from gui_driver.open_window_and_install(args.package, OPERATOR, log)
 
     area, region, _ = view3d(window)
     with bpy.context.temp_override(window=window, area=area, region=region):

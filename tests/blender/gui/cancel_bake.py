@@ -39,7 +39,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import gui_driver  # noqa: E402
-from gui_driver import ROOT, blender_sandbox, check, view3d  # noqa: E402
+from gui_driver import check, edge_mesh_object, file_state, view3d  # noqa: E402
 
 log = gui_driver.logger("cancel_bake.py")
 
@@ -55,62 +55,9 @@ def parse_args():
     return parser.parse_args(argv)
 
 
-
-
-
-
-def make_mesh(name, xy, edges, x_offset):
-    coords = np.zeros((len(xy), 3))
-    coords[:, :2] = xy
-    coords[:, 0] += x_offset
-    mesh = bpy.data.meshes.new(name)
-    mesh.vertices.add(len(coords))
-    mesh.vertices.foreach_set("co", coords.ravel())
-    mesh.edges.add(len(edges))
-    mesh.edges.foreach_set("vertices", edges.ravel())
-    mesh.update()
-    obj = bpy.data.objects.new(name, mesh)
-    bpy.context.scene.collection.objects.link(obj)
-    return obj
-
-
-def file_state():
-    """Everything a bake could change in the file."""
-    scene = bpy.context.scene
-    view_layer = bpy.context.view_layer
-    return {
-        "objects": sorted((o.name, o.type, o.data.name if o.data else None, o.select_get(),
-                           tuple(m.name for m in o.modifiers)) for o in bpy.data.objects),
-        "meshes": sorted((m.name, len(m.vertices), len(m.edges), m.shape_keys is not None) for m in bpy.data.meshes),
-        "shape_keys": sorted(k.name for k in bpy.data.shape_keys),
-        "actions": sorted(a.name for a in bpy.data.actions),
-        "node_groups": sorted(g.name for g in bpy.data.node_groups),
-        "materials": sorted(m.name for m in bpy.data.materials),
-        "collections": sorted((c.name, tuple(sorted(o.name for o in c.objects))) for c in bpy.data.collections),
-        "active": view_layer.objects.active.name if view_layer.objects.active else None,
-        "frames": (scene.frame_start, scene.frame_end, scene.frame_current),
-        "last_result": scene.stick_morph.last_result,
-    }
-
-
 def steps(args):
     wm = bpy.context.window_manager
-    while not wm.windows or wm.windows[0].screen is None:
-        yield 0.2
-    window = wm.windows[0]
-    yield 0.5
-    # 4.x's first-start Quick Setup takes every event until it is closed.
-    window.event_simulate(type="ESC", value="PRESS", x=window.width // 2, y=window.height // 2)
-    window.event_simulate(type="ESC", value="RELEASE", x=window.width // 2, y=window.height // 2)
-    yield 0.5
-    log(f"Blender {bpy.app.version_string}, window {window.width}x{window.height}")
-    check(not bpy.app.background, "Blender runs in the background (-b): this test needs a window")
-    sandbox = blender_sandbox.check_sandboxed()
-    package = args.package or blender_sandbox.find_package(os.path.join(ROOT, "dist"))
-    with bpy.context.temp_override(window=window):
-        name = blender_sandbox.install_package(package)
-    log(f"installed {package} as {name} in {sandbox}")
-    check(hasattr(bpy.types, OPERATOR), f"{OPERATOR} is not registered")
+    window, name = yield from gui_driver.open_window_and_install(args.package, OPERATOR, log)
     bake_job = importlib.import_module(f"{name}.bake_job")
     engine = importlib.import_module(f"{name}.native").load_engine()
     yield 0.5
@@ -123,25 +70,15 @@ def steps(args):
     edges = np.stack([np.arange(n - 1), np.arange(1, n)], axis=1).astype(np.int32)
     area, region, _ = view3d(window)
     with bpy.context.temp_override(window=window, area=area, region=region):
-        source = make_mesh("Source", source_xy, edges, 0.0)
-        target = make_mesh("Target", target_xy, edges, 150.0)
+        source = edge_mesh_object("Source", source_xy, edges, 0.0)
+        target = edge_mesh_object("Target", target_xy, edges, 150.0)
         for obj in bpy.context.view_layer.objects:
             obj.select_set(obj in (source, target))
         bpy.context.view_layer.objects.active = target
         bpy.context.view_layer.update()
     before = file_state()
     registered = len(wm.operators)
-    # The viewport's first drawing of the meshes (seconds with llvmpipe
-    # under Xvfb) would otherwise hold up the event loop while the bake
-    # runs, and with it the Esc: wait until the loop turns quickly.
-    last, quick = time.monotonic(), 0
-    for _ in range(3000):
-        yield 0.01
-        now = time.monotonic()
-        quick = quick + 1 if now - last < 0.1 else 0
-        last = now
-        if quick == 5:
-            break
+    yield from gui_driver.until_the_event_loop_turns_quickly()
 
     with bpy.context.temp_override(window=window, area=area, region=region):
         result = bpy.ops.object.stick_morph_bake("INVOKE_DEFAULT", True, frame_count=50)

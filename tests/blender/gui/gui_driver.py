@@ -1,7 +1,9 @@
-"""What the GUI test scripts share (adjust_last_operation.py, cancel_bake.py):
-the repository's paths and scripts/blender_sandbox.py, the checks, the 3D
-Viewport of a window, and the driver that runs a test's steps from a timer
-under a watchdog and ends Blender with the test's code.
+"""What the GUI test scripts share (adjust_last_operation.py, cancel_bake.py,
+complete_bake.py): the repository's paths and scripts/blender_sandbox.py, the
+checks, the first steps (the window up, the package installed), the 3D
+Viewport of a window, what a bake may change in the file, and the driver that
+runs a test's steps from a timer under a watchdog and ends Blender with the
+test's code.
 
 A test script is `blender --python SCRIPT` in a real window; it imports this
 module from its own folder (sys.path[0] is not the script's folder there):
@@ -16,6 +18,7 @@ check passed, 1 a failed check or an error, 2 the watchdog's timeout ran out.
 import os
 import sys
 import threading
+import time
 import traceback
 
 import bpy
@@ -45,6 +48,88 @@ def logger(script):
     def log(message):
         print(f"{script}: {message}", flush=True)
     return log
+
+
+def open_window_and_install(package, operator, log):
+    """The first steps of every GUI test, a generator to `yield from`: waits
+    for the window, closes Blender 4.x's first-start Quick Setup (shown even
+    with the splash off; like any popup it takes every event until it is
+    closed), checks the window is real, installs and enables `package` (None:
+    the newest in dist/ built for this Blender) in the sandbox and checks
+    that `operator` (a bpy.types name) is registered. Returns (window, the
+    package's module name)."""
+    wm = bpy.context.window_manager
+    while not wm.windows or wm.windows[0].screen is None:
+        yield 0.2
+    window = wm.windows[0]
+    yield 0.5
+    window.event_simulate(type="ESC", value="PRESS", x=window.width // 2, y=window.height // 2)
+    window.event_simulate(type="ESC", value="RELEASE", x=window.width // 2, y=window.height // 2)
+    yield 0.5
+    log(f"Blender {bpy.app.version_string}, Python {sys.version.split()[0]}, window "
+        f"{window.width}x{window.height}, background={bpy.app.background}")
+    check(not bpy.app.background, "Blender runs in the background (-b): this test needs a window")
+    sandbox = blender_sandbox.check_sandboxed()
+    package = package or blender_sandbox.find_package(os.path.join(ROOT, "dist"))
+    with bpy.context.temp_override(window=window):
+        name = blender_sandbox.install_package(package)
+    log(f"installed {package} as {name} in {sandbox}")
+    check(hasattr(bpy.types, operator), f"{operator} is not registered")
+    yield 0.5
+    return window, name
+
+
+def edge_mesh_object(name, xy, edges, x_offset=0.0):
+    """A new object with an edge-only mesh: vertices `xy` (#V by 2, z = 0,
+    x moved by `x_offset`), `edges` (#E by 2), linked to the scene."""
+    import numpy as np
+    coords = np.zeros((len(xy), 3))
+    coords[:, :2] = xy
+    coords[:, 0] += x_offset
+    mesh = bpy.data.meshes.new(name)
+    mesh.vertices.add(len(coords))
+    mesh.vertices.foreach_set("co", coords.ravel())
+    mesh.edges.add(len(edges))
+    mesh.edges.foreach_set("vertices", np.asarray(edges, dtype=np.int32).ravel())
+    mesh.update()
+    obj = bpy.data.objects.new(name, mesh)
+    bpy.context.scene.collection.objects.link(obj)
+    return obj
+
+
+def file_state():
+    """Everything a bake could change in the file (objects, meshes, shape
+    keys, actions, node groups, materials, collections, selection, frame
+    range, the add-on's last result)."""
+    scene = bpy.context.scene
+    view_layer = bpy.context.view_layer
+    return {
+        "objects": sorted((o.name, o.type, o.data.name if o.data else None, o.select_get(),
+                           tuple(m.name for m in o.modifiers)) for o in bpy.data.objects),
+        "meshes": sorted((m.name, len(m.vertices), len(m.edges), m.shape_keys is not None) for m in bpy.data.meshes),
+        "shape_keys": sorted(k.name for k in bpy.data.shape_keys),
+        "actions": sorted(a.name for a in bpy.data.actions),
+        "node_groups": sorted(g.name for g in bpy.data.node_groups),
+        "materials": sorted(m.name for m in bpy.data.materials),
+        "collections": sorted((c.name, tuple(sorted(o.name for o in c.objects))) for c in bpy.data.collections),
+        "active": view_layer.objects.active.name if view_layer.objects.active else None,
+        "frames": (scene.frame_start, scene.frame_end, scene.frame_current),
+        "last_result": scene.stick_morph.last_result,
+    }
+
+
+def until_the_event_loop_turns_quickly():
+    """Steps until the event loop turns quickly again: the viewport's first
+    drawing of large meshes (seconds with llvmpipe under Xvfb) holds it up,
+    and with it every simulated event."""
+    last, quick = time.monotonic(), 0
+    for _ in range(3000):
+        yield 0.01
+        now = time.monotonic()
+        quick = quick + 1 if now - last < 0.1 else 0
+        last = now
+        if quick == 5:
+            return
 
 
 def view3d(window):

@@ -12,8 +12,9 @@
 #   --out      where the screenshot goes (default: out/gui/blender<M.m>/)
 #
 # Runs tests/blender/gui/adjust_last_operation.py (Adjust Last Operation on the bake
-# operator) and tests/blender/gui/cancel_bake.py (Esc cancels a modal bake and
-# leaves the scene unchanged, issue 29), each in its own `blender
+# operator), tests/blender/gui/cancel_bake.py (Esc cancels a modal bake and
+# leaves the scene unchanged, issue 29) and tests/blender/gui/complete_bake.py
+# (a 10^4-vertex modal bake runs to the end, Ctrl+Z undoes it), each in its own `blender
 # --factory-startup` without -b, on a 1600x900 Xvfb screen, inside
 # scripts/blender_sandbox.py. Needs the Debian packages xvfb and xauth. Exits
 # with the first failing test's code: 0 passed, 1 failed, 2 timed out (also
@@ -29,7 +30,7 @@ while [[ $# -gt 0 ]]; do
     --package) package=(--package "$(realpath "$2")"); shift 2 ;;
     --sandbox) sandbox=(--dir "$2"); shift 2 ;;
     --out) out=(--out "$(realpath -m "$2")"); shift 2 ;;
-    -h|--help) sed -n '2,18p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,19p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "run_gui_tests.sh: unknown argument: $1" >&2; exit 2 ;;
   esac
 done
@@ -54,11 +55,12 @@ run_gui_test() {  # SCRIPT TITLE [script arguments]
     --python "tests/blender/gui/$script" -- "${package[@]}" "$@"
 }
 status=0 passed=0 failed=0
-for test in adjust_last_operation cancel_bake; do
+for test in adjust_last_operation cancel_bake complete_bake; do
   code=0
   case $test in
     adjust_last_operation) run_gui_test adjust_last_operation.py "Adjust Last Operation" "${out[@]}" || code=$? ;;
     cancel_bake) run_gui_test cancel_bake.py "Esc cancels a bake" || code=$? ;;
+    complete_bake) run_gui_test complete_bake.py "a 10^4-vertex bake finishes, Ctrl+Z undoes it" || code=$? ;;
   esac
   if [[ $code -eq 0 ]]; then
     passed=$((passed + 1))
