@@ -28,31 +28,20 @@ Exits with os._exit: 0 if every check passed, 1 on a failed check or error,
 2 if the watchdog's timeout ran out.
 """
 
-import argparse
 import importlib
 import os
 import sys
 import time
 
 import bpy
-import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import gui_driver  # noqa: E402
-from gui_driver import check, edge_mesh_object, file_state, view3d  # noqa: E402
+from gui_driver import check, file_state, view3d  # noqa: E402
 
 log = gui_driver.logger("cancel_bake.py")
 
 OPERATOR = "OBJECT_OT_stick_morph_bake"
-
-
-def parse_args():
-    argv = gui_driver.script_args()
-    parser = argparse.ArgumentParser(prog="cancel_bake.py", description=__doc__.split("\n\n")[0])
-    parser.add_argument("--package", help="the package to install (default: the newest in dist/ for this Blender)")
-    parser.add_argument("--vertices", type=int, default=30000, help="vertices of each figure (default 30000)")
-    parser.add_argument("--timeout", type=float, default=240, help="watchdog, seconds (default 240)")
-    return parser.parse_args(argv)
 
 
 def steps(args):
@@ -62,20 +51,9 @@ def steps(args):
     engine = importlib.import_module(f"{name}.native").load_engine()
     yield 0.5
 
-    # The figures: graphs of functions of x, so valid and compatible.
-    n = args.vertices
-    x = np.linspace(0.0, 100.0, n)
-    source_xy = np.stack([x, 3 * np.sin(0.7 * x) + 1.5 * np.sin(2.3 * x)], axis=1)
-    target_xy = np.stack([x, -2 * np.cos(0.3 * x) + 0.5 * np.sin(1.1 * x)], axis=1)
-    edges = np.stack([np.arange(n - 1), np.arange(1, n)], axis=1).astype(np.int32)
     area, region, _ = view3d(window)
     with bpy.context.temp_override(window=window, area=area, region=region):
-        source = edge_mesh_object("Source", source_xy, edges, 0.0)
-        target = edge_mesh_object("Target", target_xy, edges, 150.0)
-        for obj in bpy.context.view_layer.objects:
-            obj.select_set(obj in (source, target))
-        bpy.context.view_layer.objects.active = target
-        bpy.context.view_layer.update()
+        gui_driver.wave_figures(args.vertices)
     before = file_state()
     registered = len(wm.operators)
     yield from gui_driver.until_the_event_loop_turns_quickly()
@@ -133,7 +111,7 @@ def steps(args):
 
 
 def main():
-    args = parse_args()
+    args = gui_driver.bake_test_args("cancel_bake.py", __doc__.split("\n\n")[0], 30000)
     gui_driver.run(steps(args), args.timeout, log, "Esc cancelled the bake while it triangulated; nothing changed")
 
 

@@ -27,18 +27,16 @@ Exits with os._exit: 0 if every check passed, 1 on a failed check or error,
 2 if the watchdog's timeout ran out.
 """
 
-import argparse
 import importlib
 import os
 import sys
 import time
 
 import bpy
-import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import gui_driver  # noqa: E402
-from gui_driver import check, edge_mesh_object, file_state, view3d  # noqa: E402
+from gui_driver import check, file_state, view3d  # noqa: E402
 
 log = gui_driver.logger("complete_bake.py")
 
@@ -46,34 +44,14 @@ OPERATOR = "OBJECT_OT_stick_morph_bake"
 FRAMES = 50
 
 
-def parse_args():
-    argv = gui_driver.script_args()
-    parser = argparse.ArgumentParser(prog="complete_bake.py", description=__doc__.split("\n\n")[0])
-    parser.add_argument("--package", help="the package to install (default: the newest in dist/ for this Blender)")
-    parser.add_argument("--vertices", type=int, default=10000, help="vertices of each figure (default 10000)")
-    parser.add_argument("--timeout", type=float, default=240, help="watchdog, seconds (default 240)")
-    return parser.parse_args(argv)
-
-
 def steps(args):
     wm = bpy.context.window_manager
     window, name = yield from gui_driver.open_window_and_install(args.package, OPERATOR, log)
     bake_job = importlib.import_module(f"{name}.bake_job")
 
-    # The figures: graphs of functions of x, so valid and compatible.
-    n = args.vertices
-    x = np.linspace(0.0, 100.0, n)
-    source_xy = np.stack([x, 3 * np.sin(0.7 * x) + 1.5 * np.sin(2.3 * x)], axis=1)
-    target_xy = np.stack([x, -2 * np.cos(0.3 * x) + 0.5 * np.sin(1.1 * x)], axis=1)
-    edges = np.stack([np.arange(n - 1), np.arange(1, n)], axis=1).astype(np.int32)
     area, region, _ = view3d(window)
     with bpy.context.temp_override(window=window, area=area, region=region):
-        source = edge_mesh_object("Source", source_xy, edges, 0.0)
-        target = edge_mesh_object("Target", target_xy, edges, 150.0)
-        for obj in bpy.context.view_layer.objects:
-            obj.select_set(obj in (source, target))
-        bpy.context.view_layer.objects.active = target
-        bpy.context.view_layer.update()
+        gui_driver.wave_figures(args.vertices)
         # A user's own edits push undo steps; these were made by Python, so
         # push one, or Ctrl+Z would go back to the startup file.
         bpy.ops.ed.undo_push(message="Stick Morph GUI test: figures")
@@ -97,7 +75,7 @@ def steps(args):
         yield 0.05
     took = time.monotonic() - started
     check(job.error is None, f"the engine call ended with {job.error!r}")
-    log(f"bake of {n} vertices, {FRAMES} frames finished in {took:.1f} s (stages seen: {sorted(s for s in seen if s)})")
+    log(f"bake of {args.vertices} vertices, {FRAMES} frames finished in {took:.1f} s (stages seen: {sorted(s for s in seen if s)})")
     check(len(wm.operators) == registered + 1 and wm.operators[-1].bl_idname == OPERATOR,
           "the finished bake was not registered (no Adjust Last Operation)")
     results = [o for o in bpy.data.objects if o.name not in {b[0] for b in before["objects"]}]
@@ -123,7 +101,7 @@ def steps(args):
 
 
 def main():
-    args = parse_args()
+    args = gui_driver.bake_test_args("complete_bake.py", __doc__.split("\n\n")[0], 10000)
     gui_driver.run(steps(args), args.timeout, log, "a 10^4-vertex modal bake finished; Ctrl+Z undid it")
 
 

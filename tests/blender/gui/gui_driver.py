@@ -97,6 +97,35 @@ def edge_mesh_object(name, xy, edges, x_offset=0.0):
     return obj
 
 
+def bake_test_args(prog, description, vertices):
+    """The arguments of a bake test (after `--`): --package, --vertices
+    (default `vertices`) and --timeout."""
+    import argparse
+    parser = argparse.ArgumentParser(prog=prog, description=description)
+    parser.add_argument("--package", help="the package to install (default: the newest in dist/ for this Blender)")
+    parser.add_argument("--vertices", type=int, default=vertices, help=f"vertices of each figure (default {vertices})")
+    parser.add_argument("--timeout", type=float, default=240, help="watchdog, seconds (default 240)")
+    return parser.parse_args(script_args())
+
+
+def wave_figures(n):
+    """Two selected edge meshes of n vertices, a wave (Source) into another
+    wave (Target, active), side by side: graphs of functions of x, so valid
+    and compatible. Call in a 3D Viewport's context."""
+    import numpy as np
+    x = np.linspace(0.0, 100.0, n)
+    source_xy = np.stack([x, 3 * np.sin(0.7 * x) + 1.5 * np.sin(2.3 * x)], axis=1)
+    target_xy = np.stack([x, -2 * np.cos(0.3 * x) + 0.5 * np.sin(1.1 * x)], axis=1)
+    edges = np.stack([np.arange(n - 1), np.arange(1, n)], axis=1).astype(np.int32)
+    source = edge_mesh_object("Source", source_xy, edges, 0.0)
+    target = edge_mesh_object("Target", target_xy, edges, 150.0)
+    for obj in bpy.context.view_layer.objects:
+        obj.select_set(obj in (source, target))
+    bpy.context.view_layer.objects.active = target
+    bpy.context.view_layer.update()
+    return source, target
+
+
 def file_state():
     """Everything a bake could change in the file (objects, meshes, shape
     keys, actions, node groups, materials, collections, selection, frame
