@@ -265,7 +265,33 @@ def run_morph(cli, src, tgt, out, frames, extra):
     if r.returncode != 0:
         raise RuntimeError((r.stderr.strip() or f"exit {r.returncode}") + " [" + " ".join(cmd[1:]) + "]")
     doc = json.loads(pathlib.Path(out).read_text())
-    return np.asarray(doc["frames"], dtype=float), np.asarray(doc["times"], dtype=float), doc.get("stats", {})
+    stats = dict(doc.get("stats", {}))
+    stats["_shape"] = triangulation_shape(doc)
+    return np.asarray(doc["frames"], dtype=float), np.asarray(doc["times"], dtype=float), stats
+
+
+def triangulation_shape(doc):
+    """Issue 30's shape of the compatible triangulation a morph used (the output's
+    "triangulation"; a key-pose output's "triangulations" are all taken): the smallest angle in
+    degrees over every triangle in both embeddings, and Steiner vertices per figure vertex.
+    None when the output has no triangulation (the straight-line morph's is null)."""
+    triangulations = [t for t in (doc.get("triangulations") or [doc.get("triangulation")])
+                      if isinstance(t, dict) and t.get("triangles")]
+    if not triangulations:
+        return None
+    least, steiner = 180.0, 0.0
+    for tri in triangulations:
+        triangles = np.asarray(tri["triangles"], dtype=int)
+        for embedding in ("source", "target"):
+            p = np.asarray(tri[embedding], dtype=float)[triangles]  # #T by 3 by 2
+            for j in range(3):
+                u = p[:, (j + 1) % 3] - p[:, j]
+                v = p[:, (j + 2) % 3] - p[:, j]
+                cross = np.abs(u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0])
+                dot = u[:, 0] * v[:, 0] + u[:, 1] * v[:, 1]
+                least = min(least, float(np.degrees(np.arctan2(cross, dot)).min()))
+        steiner = max(steiner, tri["steiner_vertices"] / max(1, tri["figure_vertices"]))
+    return {"min_angle_deg": least, "steiner_per_vertex": steiner}
 
 
 def bad_frames(cli, src_path, frames, edges, tmp):
@@ -698,6 +724,14 @@ def main(argv=None):
                         r["ms_per_frame"] = float(ms["morph"]) / len(frames)
                     if isinstance(ms.get("triangulate"), (int, float)):
                         r["triangulate_ms"] = float(ms["triangulate"])
+                    # Issue 30: the triangulation's shape, and the share of interior frames
+                    # that are the rigid guide itself.
+                    if stats.get("_shape"):
+                        r["triangle_min_angle_deg"] = stats["_shape"]["min_angle_deg"]
+                        r["steiner_per_vertex"] = stats["_shape"]["steiner_per_vertex"]
+                    guide = (stats.get("rigid") or {}).get("guide_frames")
+                    if isinstance(guide, dict) and sum(guide.values()) > 0:
+                        r["exact_frame_share"] = guide.get("exact", 0) / sum(guide.values())
                 if linear and "invalid_frames" in stats:
                     r["engine_invalid_frames"] = stats["invalid_frames"]
                     if r["bad_frames"] is not None and sorted(r["bad_frames"]) != sorted(

@@ -48,6 +48,57 @@ def _motion_rows(motion, method):
 
 
 
+# Issue 30's targets for following the guide and for the triangulation's shape.
+ISSUE30 = {"within": 0.005, "within_share": 0.95, "edge_dev_p90": 0.06, "angle_median_deg": 5.0,
+           "angle_p10_deg": 1.0, "steiner_median": 0.5}
+
+
+def _p(values, q):
+    """The q-quantile as the report's tables take it: the value at rank floor(q n), or None."""
+    values = sorted(values)
+    return values[min(len(values) - 1, int(q * len(values)))] if values else None
+
+
+def _guide_and_shape(motion, methods):
+    """Issue 30: per method run by the CLI, how closely it follows the rigid motion on the
+    figure's own edges (the `arap` reference) on the pairs where that motion stays valid, the
+    share of frames that are the guide itself, and the shape of the compatible triangulation.
+    Markdown blocks; empty when the run measured none of it."""
+    measured = [m for m in methods if m not in REFERENCES
+                and any("triangle_min_angle_deg" in r for _, _, r in _motion_rows(motion, m))]
+    if not measured:
+        return []
+    valid = {name for name, p in motion["pairs"].items()
+             if isinstance(p.get("arap"), dict) and p["arap"].get("bad_frames") == []}
+    rows = []
+    for m in measured:
+        results = _motion_rows(motion, m)
+        close = [name for name, p, r in results
+                 if name in valid and r["edge_dev"] - p["arap"]["edge_dev"] <= ISSUE30["within"]]
+        judged = [name for name, _, r in results if name in valid]
+        angles = [r["triangle_min_angle_deg"] for _, _, r in results if "triangle_min_angle_deg" in r]
+        steiner = [r["steiner_per_vertex"] for _, _, r in results if "steiner_per_vertex" in r]
+        exact = [r["exact_frame_share"] for _, _, r in results if "exact_frame_share" in r]
+        rows.append([f"**{m}**", f"{len(close)}/{len(judged)}" + (f" ({len(close) / len(judged):.0%})" if judged else ""),
+                     _num(_p([r["edge_dev"] for _, _, r in results], 0.9), ".3f"),
+                     _num(_median(exact), ".0%") if exact else "–",
+                     _num(_median(angles), ".2f"), _num(_p(angles, 0.1), ".2f"), _num(min(angles), ".3f"),
+                     _num(_median(steiner), ".2f")])
+    rows.append(["*must show*", f"≥ {ISSUE30['within_share']:.0%}", f"≤ {ISSUE30['edge_dev_p90']:g}", "",
+                 f"≥ {ISSUE30['angle_median_deg']:g}", f"≥ {ISSUE30['angle_p10_deg']:g}", "",
+                 f"≤ {ISSUE30['steiner_median']:g}"])
+    return ["### Following the guide, and the triangulation's shape (issue 30)\n",
+            f"On the {len(valid)} pairs whose `arap` motion (rigid on the figure's own edges) is valid in every "
+            f"frame: how many morphs stay within {ISSUE30['within']:g} edge-length deviation of it. Exact frames: "
+            "the median share of interior frames that are the rigid guide itself (`stats.rigid.guide_frames`). "
+            "The smallest angle, in degrees, over every triangle of the compatible triangulation the morph used, "
+            "in both embeddings, per pair; Steiner vertices per figure vertex.\n",
+            table(["method", f"within {ISSUE30['within']:g} of arap", "edge dev p90", "exact frames median",
+                   "smallest angle ° median", "p10", "min", "Steiner / vertex median"], rows,
+                  ["---"] + ["--:"] * 7),
+            ""]
+
+
 def _git_ignored(path):
     """Whether git ignores the path (out/, build/): such a file is never committed, so the
     report must not link it. False where git cannot tell."""
@@ -194,6 +245,8 @@ def motion_section(motion, out_path, plot_dir):
     add("Issue 12's targets (\"must show\"), per method, with the measured values:\n")
     add(table(["target"] + methods, rows, ["---"] + ["---"] * len(methods)))
     add("")
+
+    md.extend(_guide_and_shape(motion, methods))
 
     # Per kind of pair.
     rows = []

@@ -234,3 +234,35 @@ def test_make_benchmarks_writes_the_motion_section(tmp_path):
     (tmp_path / "data2" / "motion.json").write_text("{")
     r = run_make_benchmarks(tmp_path / "data2", tmp_path / "B3.md", tmp_path / "plots3")
     assert r.returncode == 2 and "motion.json" in r.stderr
+
+
+def test_following_the_guide_and_the_triangulation_shape(tmp_path):
+    """Issue 30's table: only the CLI methods that report the triangulation's shape; judged
+    against arap only on pairs whose arap motion is valid (here the self-turn only)."""
+    motion = tiny_motion()
+    shapes = {"glyph_J_to_U": (2.0, 0.1, 0.5), "special_self_turn_180": (8.0, 0.3, 1.0)}
+    for name, (angle, steiner, exact) in shapes.items():
+        motion["pairs"][name]["rigid"].update(triangle_min_angle_deg=angle, steiner_per_vertex=steiner,
+                                              exact_frame_share=exact)
+    motion["pairs"]["special_self_turn_180"]["arap"]["bad_frames"] = []
+    text = section(motion, tmp_path)
+    assert "### Following the guide, and the triangulation's shape (issue 30)" in text
+    rows = [line for line in text.splitlines() if line.startswith("| **rigid** |")]
+    assert len(rows) == 2  # the summary's row and this table's
+    header = [c.strip() for c in [line for line in text.splitlines()
+                                  if line.startswith("| method | within")][0].strip("|").split("|")]
+    rigid = dict(zip(header, [c.strip() for c in rows[1].strip("|").split("|")]))
+    assert rigid["within 0.005 of arap"] == "1/1 (100%)"
+    assert rigid["edge dev p90"] == "0.011"
+    assert rigid["exact frames median"] == "75%"
+    assert rigid["smallest angle ° median"] == "5.00" and rigid["p10"] == "2.00" and rigid["min"] == "2.000"
+    assert rigid["Steiner / vertex median"] == "0.20"
+    lines = text.splitlines()
+    start = lines.index([line for line in lines if line.startswith("| method | within")][0])
+    table_lines = lines[start:lines.index("", start)]
+    # barycentric reports no shape here: no row; the must-show row last
+    assert [line.split("|")[1].strip() for line in table_lines[2:]] == ["**rigid**", "*must show*"]
+
+
+def test_without_shapes_there_is_no_issue_30_table(tmp_path):
+    assert "(issue 30)" not in section(tiny_motion(), tmp_path)
