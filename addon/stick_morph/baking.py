@@ -219,15 +219,16 @@ def _group_input_identifier(group, name):
 
 
 # The tubes' node group as built now; a file may hold an older one (a group
-# without this number is version 1: full quality in the viewport too), which
-# its results keep, while a new bake builds this version beside it.
-TUBES_VERSION = 2
+# without this number is version 1: full quality in the viewport too;
+# version 2 had 6 sides in the viewport), which its results keep, while a new
+# bake builds this version beside it.
+TUBES_VERSION = 3
 
 # Render quality (what the tubes have always rendered): a 12-sided profile
 # and a UV sphere of 12 segments and 6 rings at every vertex.
 RENDER_PROFILE = 12
 RENDER_SPHERE = (12, 6)
-# Viewport quality (issue 29): a 6-sided profile, and joints (UV spheres of 8
+# Viewport quality (issue 29): a 4-sided profile, and joints (UV spheres of 8
 # segments and 4 rings) only where an edge chain ends or branches: vertices
 # on no edge (dots), one edge (ends) or three or more (junctions). Along a
 # chain, Mesh to Curve makes one spline through the vertex and Curve to Mesh
@@ -235,8 +236,13 @@ RENDER_SPHERE = (12, 6)
 # Measured with bench/blender_bake.py at 10^4 vertices (Blender 3.4, frame_set
 # plus the evaluated mesh): the full-quality spheres are 620,000 of the
 # evaluated mesh's 740,000 vertices and hold playback at 2.8 fps; the tube
-# alone plays at 27 fps with 12 sides, 86 with 4.
-VIEWPORT_PROFILE = 6
+# alone plays at 27 fps with 12 sides, 86 with 4 (one machine). On another
+# (version 2 of the group, 6 sides) the benchmark played at 32-34 fps when
+# quiet and 18-24 while other work ran; Curve to Mesh's cost follows the
+# sides (a 10^4-vertex chain, evaluated after a shape-key change: 39 fps with
+# 6 sides, 58 with 4, 74 with 3), so version 3 has 4, which smooth shading
+# still draws round.
+VIEWPORT_PROFILE = 4
 VIEWPORT_SPHERE = (8, 4)
 
 

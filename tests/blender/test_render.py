@@ -98,7 +98,7 @@ def test_saved_file_renders_without_the_addon(scene, addon):
 def test_tubes_render_in_full_and_play_light_in_the_viewport(scene, addon):
     # Issue 29: a render evaluates the tubes at full quality (a 12-sided tube,
     # a 12 x 6 UV sphere at every vertex: what they always rendered); the
-    # viewport's depsgraph, which playback evaluates, gets a 6-sided tube and
+    # viewport's depsgraph, which playback evaluates, gets a 4-sided tube and
     # 8 x 4 spheres only where a chain ends or branches. Counted exactly from
     # the figure's vertex degrees: Mesh to Curve puts a degree-2 vertex on one
     # spline and a vertex of degree d != 2 at the end of d splines.
