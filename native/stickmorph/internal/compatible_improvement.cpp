@@ -18,6 +18,21 @@
 namespace stickmorph::internal {
 namespace {
 
+// The point at p's barycentric coordinates in triangle t of `from`, in
+// triangle t of `to`; false if t is not positive (in doubles) in `from`.
+bool map_through(const std::vector<Vec2>& from, const std::vector<Vec2>& to, const Triangle& t, const Vec2& p,
+                 Vec2& image) {
+  const Vec2 &a = from[t[0]], &b = from[t[1]], &c = from[t[2]];
+  const double area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+  if (!(area > 0)) return false;
+  const double l0 = ((b[0] - p[0]) * (c[1] - p[1]) - (b[1] - p[1]) * (c[0] - p[0])) / area;
+  const double l1 = ((c[0] - p[0]) * (a[1] - p[1]) - (c[1] - p[1]) * (a[0] - p[0])) / area;
+  const double l2 = 1 - l0 - l1;
+  const Vec2 &ta = to[t[0]], &tb = to[t[1]], &tc = to[t[2]];
+  image = {l0 * ta[0] + l1 * tb[0] + l2 * tc[0], l0 * ta[1] + l1 * tb[1] + l2 * tc[1]};
+  return true;
+}
+
 std::uint64_t edge_id(int a, int b) {
   if (a > b) std::swap(a, b);
   return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
@@ -43,8 +58,7 @@ class Mesh {
   // The smallest angle of triangle t over both embeddings.
   double quality(int t) const {
     const Triangle& tr = triangle(t);
-    return std::min(triangle_min_angle(source_[tr[0]], source_[tr[1]], source_[tr[2]]),
-                    triangle_min_angle(target_[tr[0]], target_[tr[1]], target_[tr[2]]));
+    return both_min_angle(tr[0], tr[1], tr[2]);
   }
 
   // The triangle across edge a -> b of triangle t (-1 on the boundary).
@@ -110,14 +124,8 @@ class Mesh {
   // new node's index, or -1.
   int insert(int t, const Vec2& p_source) {
     const Triangle tr = triangle(t);
-    const Vec2 &a = source_[tr[0]], &b = source_[tr[1]], &c = source_[tr[2]];
-    const double area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-    if (!(area > 0)) return -1;
-    const double l0 = ((b[0] - p_source[0]) * (c[1] - p_source[1]) - (b[1] - p_source[1]) * (c[0] - p_source[0])) / area;
-    const double l1 = ((c[0] - p_source[0]) * (a[1] - p_source[1]) - (c[1] - p_source[1]) * (a[0] - p_source[0])) / area;
-    const double l2 = 1 - l0 - l1;
-    const Vec2 &ta = target_[tr[0]], &tb = target_[tr[1]], &tc = target_[tr[2]];
-    const Vec2 p_target{l0 * ta[0] + l1 * tb[0] + l2 * tc[0], l0 * ta[1] + l1 * tb[1] + l2 * tc[1]};
+    Vec2 p_target;
+    if (!map_through(source_, target_, tr, p_source, p_target)) return -1;
     const int v = node_count();
     source_.push_back(p_source);
     target_.push_back(p_target);
@@ -389,18 +397,9 @@ int refine(Mesh& mesh, double goal, int budget) {
       const int holder = locate(mesh, in_target ? mesh.target() : mesh.source(), t, point);
       if (holder >= 0) {
         Vec2 source_point = point;
-        if (in_target) {
-          const Triangle& h = mesh.triangle(holder);
-          const Vec2 &a = mesh.target()[h[0]], &b = mesh.target()[h[1]], &c = mesh.target()[h[2]];
-          const double area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-          const double l0 = ((b[0] - point[0]) * (c[1] - point[1]) - (b[1] - point[1]) * (c[0] - point[0])) / area;
-          const double l1 = ((c[0] - point[0]) * (a[1] - point[1]) - (c[1] - point[1]) * (a[0] - point[0])) / area;
-          const double l2 = 1 - l0 - l1;
-          const Vec2 &sa = mesh.source()[h[0]], &sb = mesh.source()[h[1]], &sc = mesh.source()[h[2]];
-          source_point = {l0 * sa[0] + l1 * sb[0] + l2 * sc[0], l0 * sa[1] + l1 * sb[1] + l2 * sc[1]};
-        }
         const Triangle h = mesh.triangle(holder);
-        const int v = mesh.insert(holder, source_point);
+        const bool mapped = !in_target || map_through(mesh.target(), mesh.source(), h, point, source_point);
+        const int v = mapped ? mesh.insert(holder, source_point) : -1;
         if (v >= 0) {
           // The new node's place in the other embedding is free within its
           // star's kernel: the barycentric image of the off-centre there
