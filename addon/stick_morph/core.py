@@ -34,7 +34,7 @@ so frame 0 is the source's world vertices and the last frame the target's
 that lie in parallel planes, e.g. side by side at different depths. s is the
 engine frame's time for BARYCENTRIC and LINEAR (easing picks frames, see
 ease_sample_indices), and the eased time ease(k / (N - 1)) for RIGID, whose
-frames are evenly spaced along the motion with the easing on top: the
+frames may be spaced along the motion after the easing: the
 height then moves in step with the figure.
 """
 

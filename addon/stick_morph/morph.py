@@ -272,9 +272,10 @@ def compute_morph(prepared: PreparedPair, settings: BakeSettings) -> MorphResult
     # easing for BARYCENTRIC picks engine frames instead of interpolating
     # (ease_sample_indices) so that what is baked is what was verified.
     #
-    # RIGID's easing goes to the engine: it spaces a rigid morph's frames
-    # evenly along the motion (by how far the figure has moved, not by
-    # time), and its in-out easing is applied to that even-speed parameter.
+    # RIGID's easing goes to the engine: it may space a rigid morph's frames
+    # along the motion (by how far the figure has moved, where its speed
+    # would be uneven in the motion's own time), and its in-out easing is
+    # applied to time before that.
     # Picking frames of a finer uniform morph, as for BARYCENTRIC, would ease
     # the engine's time instead, which for RIGID is already reparametrised:
     # the figure would ease by the wrong clock and cost 8x the frames. So the

@@ -19,6 +19,7 @@
 #include "stickmorph/internal/barycentric_weights.h"
 #include "stickmorph/internal/convex_combination_system.h"
 #include "stickmorph/internal/morph_topology.h"
+#include "stickmorph/internal/motion_timing.h"
 #include "stickmorph/internal/preconditioned_gmres.h"
 #include "stickmorph/internal/stopwatch.h"
 #include "stickmorph/morph_solver.h"
@@ -136,7 +137,7 @@ struct GuidedMorph::State {
   std::vector<double> sample_u;
   std::vector<std::vector<float>> trust_samples;
   std::vector<char> sampled_below_one;  // per figure vertex: some trust_samples below 1 (empty: not known yet)
-  std::vector<double> own_motion;
+  std::optional<MotionTiming> own_timing;  // the morph's own motion at the samples (none: it follows the guide)
   std::optional<MorphSolver> fallback;  // [8] itself, made on first need
   GuidedMorphStats stats;
 
@@ -260,8 +261,8 @@ struct GuidedMorph::State {
     return a;
   }
 
-  // Samples the guide at kTrustSamples + 1 times evenly spaced along the
-  // guide's motion: the trust of every figure vertex for trust_at, and,
+  // Samples the guide at kTrustSamples + 1 times of its own timing
+  // (RigidGuide::parameter_at): the trust of every figure vertex for trust_at, and,
   // where some vertex does not trust the guide fully, the frame the morph
   // will actually make there (unverified: it only times the morph). If any
   // such frame exists, the morph is timed by its own motion rather than
@@ -299,14 +300,14 @@ struct GuidedMorph::State {
       }
       figure[j] = similarity.apply(sample_u[j], std::vector<Vec2>(p.begin(), p.begin() + n));
     }
-    own_motion.clear();
+    own_timing.reset();
     if (!leaves_guide || !guide->retimed_by_morph()) return;
     // As RigidGuide::parameter_at: a morph that does not move beyond
     // rounding keeps the guide's timing.
     double size = 0;
     for (const Vec2& p : figure[0]) size = std::max({size, std::abs(p[0]), std::abs(p[1])});
     for (const Vec2& p : figure[kTrustSamples]) size = std::max({size, std::abs(p[0]), std::abs(p[1])});
-    own_motion.assign(kTrustSamples + 1, 0.0);
+    std::vector<double> own_motion(kTrustSamples + 1, 0.0), times(kTrustSamples + 1, 0.0);
     for (int j = 1; j <= kTrustSamples; ++j) {
       long double sum = 0;
       for (int v = 0; v < n; ++v) {
@@ -314,24 +315,22 @@ struct GuidedMorph::State {
         sum += dx * dx + dy * dy;
       }
       own_motion[j] = own_motion[j - 1] + std::sqrt(double(sum / n));
+      times[j] = sample_time(j);
     }
-    if (!(own_motion.back() > 1e-10 * size)) own_motion.clear();
+    own_timing.emplace(std::move(times), std::move(own_motion), 1e-10 * size, kMostUnevenSpeed);
   }
 
-  // The morph parameter u at animation time t: even along the guide's
-  // motion, or along the morph's own sampled motion where it leaves the
-  // guide (sample_guide), with the easing on top.
+  // The morph parameter u at animation time t: the guide's (RigidGuide::
+  // parameter_at: its own time, evened where its speed is uneven), or, where
+  // the morph leaves the guide, evened by the morph's own sampled motion as
+  // much as that is uneven (sample_guide), with the easing first.
   double parameter_at(double t) const {
     if (t == 0 || t == 1) return t;
-    if (own_motion.empty() || !(own_motion.back() > 0)) return guide->parameter_at(t, easing);
+    if (!own_timing) return guide->parameter_at(t, easing);
     const double eased = easing == Easing::InOut ? t * t * (3 - 2 * t) : t;
-    const double goal = eased * own_motion.back();
-    const auto it = std::lower_bound(own_motion.begin(), own_motion.end(), goal);
-    const int j = std::clamp(int(it - own_motion.begin()), 1, kTrustSamples);
-    const double lo = own_motion[j - 1], hi = own_motion[j];
-    const double f = hi > lo ? std::clamp((goal - lo) / (hi - lo), 0.0, 1.0) : 0.0;
-    // Between samples, even along the guide.
-    return guide->parameter_at((1 - f) * sample_time(j - 1) + f * sample_time(j), Easing::None);
+    // The guide's time at the morph's own; between samples, as the guide's
+    // timing goes.
+    return guide->parameter_at(own_timing->at(eased), Easing::None);
   }
 
   // Steps 3-4: the guide frame when every figure vertex trusts it fully,

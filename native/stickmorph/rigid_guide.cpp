@@ -9,6 +9,7 @@
 #include "stickmorph/errors.h"
 #include "stickmorph/internal/edge_turns.h"
 #include "stickmorph/internal/edge_vector_fit.h"
+#include "stickmorph/internal/motion_timing.h"
 
 namespace stickmorph {
 namespace {
@@ -46,8 +47,7 @@ struct RigidGuide::State {
   std::vector<Vec2> center0, center1;                  // part -> centroid in source, target
   std::vector<Vec2> source, target;
   std::optional<internal::EdgeVectorFit> fit;
-  std::vector<double> motion;  // cumulative RMS displacement at u = j / kMotionSamples
-  double still_motion = 0;     // a total motion at or below this is rounding noise
+  std::optional<internal::MotionTiming> timing;  // of the cumulative RMS displacement at u = j / kMotionSamples
   /// The figure at u whose edge e points along directions[e] (a unit
   /// vector): the least-squares positions for the edges at their lengths
   /// at u (EdgeVectorFit), each part's centroid on its straight line.
@@ -85,8 +85,7 @@ RigidGuide::RigidGuide(const StickFigure& source, const std::vector<Vec2>& targe
   for (int v = 0; v < s.n; ++v)
     size = std::max({size, std::abs(s.source[v][0]), std::abs(s.source[v][1]), std::abs(s.target[v][0]),
                      std::abs(s.target[v][1])});
-  s.still_motion = 1e-10 * size;
-  s.motion.assign(kMotionSamples + 1, 0.0);
+  std::vector<double> motion(kMotionSamples + 1, 0.0), samples(kMotionSamples + 1, 0.0);
   // The edges' directions at the samples by a rotation of each per step
   // rather than a cosine and a sine each: those were 7% of a rigid morph
   // of 10^3 vertices (prepare_rigid_morph and 48 frames, thinned, perf;
@@ -111,9 +110,12 @@ RigidGuide::RigidGuide(const StickFigure& source, const std::vector<Vec2>& targe
       const long double dx = here[v][0] - previous[v][0], dy = here[v][1] - previous[v][1];
       sum += dx * dx + dy * dy;
     }
-    s.motion[j] = s.motion[j - 1] + std::sqrt(double(sum / std::max(s.n, 1)));
+    motion[j] = motion[j - 1] + std::sqrt(double(sum / std::max(s.n, 1)));
+    samples[j] = double(j) / kMotionSamples;
     previous = here;
   }
+  samples.back() = 1;
+  s.timing.emplace(std::move(samples), std::move(motion), 1e-10 * size, internal::kMostUnevenSpeed);
 }
 
 RigidGuide::~RigidGuide() = default;
@@ -146,19 +148,7 @@ std::vector<Vec2> RigidGuide::State::positions(double u, const std::vector<Vec2>
 double RigidGuide::parameter_at(double t, Easing easing) const {
   if (!(t >= 0 && t <= 1)) throw InvalidArgumentError("the morph time must be in [0, 1]");
   if (t == 0 || t == 1) return t;
-  const State& s = *state_;
-  const double total = s.motion.back();
-  const double eased = ease(t, easing);
-  // Nothing moves (the table then holds only rounding noise): any
-  // parametrisation is even, so keep the (eased) time.
-  if (!(total > s.still_motion)) return eased;
-  const double goal = eased * total;
-  // The first sample at or beyond the goal; linear in between.
-  const auto it = std::lower_bound(s.motion.begin(), s.motion.end(), goal);
-  const int j = std::clamp(int(it - s.motion.begin()), 1, kMotionSamples);
-  const double lo = s.motion[j - 1], hi = s.motion[j];
-  const double f = hi > lo ? (goal - lo) / (hi - lo) : 0.0;
-  return std::clamp((j - 1 + f) / kMotionSamples, 0.0, 1.0);
+  return state_->timing->at(ease(t, easing));
 }
 
 }  // namespace stickmorph

@@ -15,9 +15,10 @@
 //
 // Nothing here keeps the guide from self-intersecting; guided_morph.h makes
 // the valid morph follow it as closely as validity allows, and every frame
-// is verified exactly there. The even-speed time table (issue 12, item 3)
-// is computed on the guide, because it is cheap to sample: a triangular
-// solve per sample on a Laplacian factored once.
+// is verified exactly there. The time table that evens the speed where the
+// guide's own is uneven (issue 12, item 3) is computed on the guide, because
+// it is cheap to sample: a triangular solve per sample on a Laplacian
+// factored once.
 #pragma once
 
 #include <memory>
@@ -76,11 +77,19 @@ class RigidGuide : public GuideTrajectory {
   /// source at 0 and the target at 1 up to rounding.
   std::vector<Vec2> at(double u) const override;
 
-  /// The morph parameter at animation time t in [0, 1] such that the guide
-  /// moves evenly (equal RMS vertex displacement per equal step of eased
-  /// time): the cumulative motion, sampled finely, inverted. 0 -> 0 and
-  /// 1 -> 1 exactly; increasing. A guide that does not move (beyond
-  /// rounding) keeps t, eased.
+  /// The morph parameter at animation time t in [0, 1]: the (eased) time
+  /// itself while the guide's speed stays within 1.3 times its mean
+  /// (internal::kMostUnevenSpeed; then
+  /// every edge's length changes linearly in time and its angle at constant
+  /// speed, the as-rigid-as-possible interpolation exactly, issue 30);
+  /// otherwise the least blend (1 - a) t + a e(t) with the even-speed
+  /// parameter e(t) (equal RMS vertex displacement per equal step of time:
+  /// the cumulative motion, sampled finely, inverted) that brings the
+  /// largest speed within 1.3 times the mean (issue 12's even speed). A
+  /// figure that grows or shrinks a lot as it turns moves fastest where it
+  /// is largest, which is what such a blend evens. 0 -> 0 and 1 -> 1
+  /// exactly; increasing. A guide that does not move (beyond rounding)
+  /// keeps t, eased.
   double parameter_at(double t, Easing easing = Easing::None) const override;
 
  private:

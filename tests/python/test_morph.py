@@ -723,13 +723,15 @@ def test_the_largest_number_of_turns():
 
 @pytest.mark.parametrize("name", PAIRS)
 def test_even_speed_by_default(name, data_dir):
-    # Time follows the motion: the vertices move about as far from each frame
-    # to the next, with no snap out of the start pose or into the end pose
-    # and no pop in between (the barycentric morph's first or last step is
-    # often several times its mean).
+    # The vertices move about as far from each frame to the next, with no
+    # snap out of the start pose or into the end pose and no pop in between
+    # (the barycentric morph's first or last step is often several times its
+    # mean): the rigid motion keeps its own time (issue 30) while its speed
+    # stays within 1.3 times the mean (internal/motion_timing.h), and is
+    # evened just enough beyond that.
     source, target, edges = named_pair(name, data_dir)
     step = steps(stickmorph.morph(source, target, edges, frames=30)["frames"])
-    assert 0.75 * step.mean() <= step.min() and step.max() <= 1.25 * step.mean(), step / step.mean()
+    assert 0.75 * step.mean() <= step.min() and step.max() <= 1.3 * 1.01 * step.mean(), step / step.mean()
 
 
 @pytest.mark.parametrize("name", ["tree_junction", "letter_a", "s_to_u", "quarter_turn"])
