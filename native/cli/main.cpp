@@ -186,6 +186,7 @@ std::string morph_document(const StickFigure& source, const MorphStickFiguresRes
     rigid.exact_frames = stats.guide_exact_frames;
     rigid.blended_frames = stats.guide_blended_frames;
     rigid.barycentric_frames = stats.guide_barycentric_frames;
+    rigid.refinement_steiner = stats.triangulation.refinement_steiner;
     how.rigid = &rigid;
   }
   how.triangulate_ms = stats.triangulate_ms;

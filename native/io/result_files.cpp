@@ -269,6 +269,8 @@ std::string morph_file_json(const StickFigure& source, const std::vector<double>
     write_point(out, rigid.similarity.target_center);
     out.end_object();
     write_guide_frames(out, rigid.exact_frames, rigid.blended_frames, rigid.barycentric_frames);
+    out.key("refinement_steiner_vertices");
+    out.value(rigid.refinement_steiner);
     out.end_object();
   }
   if (how.correspondence) {

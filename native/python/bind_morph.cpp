@@ -51,6 +51,7 @@ py::dict rigid_dict(const sm::MorphStickFiguresStats& stats, const sm::MorphStic
   rigid["similarity_factored"] = stats.similarity_factored;
   rigid["similarity"] = similarity;
   rigid["guide_frames"] = guide_frames;
+  rigid["refinement_steiner_vertices"] = stats.triangulation.refinement_steiner;
   return rigid;
 }
 

@@ -49,9 +49,8 @@ struct FigureTriangulationOptions {
   /// With improvement_rounds: Steiner vertices that compatible refinement
   /// may add, as a share of the figure's vertex count (the faces' own
   /// included), and as many again for triangles still below 2 degrees.
-  /// 0: none. Measured in BENCHMARKS.md; not the default, because the
-  /// rigid morph places Steiner vertices by blended weights, and more of
-  /// them left its guide on letters drawn into other letters.
+  /// 0: none (the barycentric method's). The rigid method asks for 0.4
+  /// (internal/rigid_morph_setup.cpp), measured in BENCHMARKS.md.
   double refinement_share = 0;
   /// More points that the enclosure must contain besides both figures'
   /// vertices: the rigid morph's guide sampled over time (issue 12), so

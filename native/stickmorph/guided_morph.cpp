@@ -18,9 +18,11 @@
 #include "stickmorph/frame_verification.h"
 #include "stickmorph/internal/barycentric_weights.h"
 #include "stickmorph/internal/convex_combination_system.h"
+#include "stickmorph/internal/edge_turns.h"
 #include "stickmorph/internal/morph_topology.h"
 #include "stickmorph/internal/motion_timing.h"
 #include "stickmorph/internal/preconditioned_gmres.h"
+#include "stickmorph/internal/rigid_steiner_placement.h"
 #include "stickmorph/internal/stopwatch.h"
 #include "stickmorph/morph_solver.h"
 
@@ -79,6 +81,34 @@ std::string output_defect(const FigureTriangulation& tri, const StickFigure& sou
 
 }  // namespace
 
+// How far the guide turns every figure edge from u = 0 to 1 in the
+// normalised space (the similarity taken out): each edge's direction
+// followed through kTurnSamples samples, every step taken the short way.
+// The guide turns an edge at constant speed by at most half a turn beyond
+// the similarity's whole rotation, which is taken out here, so a step of
+// 1/64 turns it by far less than half a turn.
+static std::vector<double> normalised_turns(const FigureTriangulation& tri, const StickFigure& source,
+                                            const SimilarityMotion& similarity, const GuideTrajectory& guide) {
+  constexpr int kTurnSamples = 64;
+  const std::size_t m = source.edges.size();
+  std::vector<double> turns(m, 0.0), previous(m);
+  auto directions = [&](const std::vector<Vec2>& p, std::vector<double>& angle) {
+    for (std::size_t e = 0; e < m; ++e) {
+      const Vec2 &a = p[std::size_t(source.edges[e][0])], &b = p[std::size_t(source.edges[e][1])];
+      angle[e] = std::atan2(b[1] - a[1], b[0] - a[0]);
+    }
+  };
+  directions(tri.source, previous);
+  std::vector<double> here(m);
+  for (int j = 1; j <= kTurnSamples; ++j) {
+    const double u = double(j) / kTurnSamples;
+    directions(j == kTurnSamples ? tri.target : similarity.unapply(u, guide.at(u)), here);
+    for (std::size_t e = 0; e < m; ++e) turns[e] += wrap_angle(here[e] - previous[e]);
+    previous.swap(here);
+  }
+  return turns;
+}
+
 struct GuidedMorph::State {
   State(const FigureTriangulation& normalised, const StickFigure& source_figure,
         const Decomposition& source_decomposition, const SimilarityMotion& motion,
@@ -91,24 +121,19 @@ struct GuidedMorph::State {
         weight_kind(kind),
         easing(easing_kind),
         topo(build_topology(tri)),
-        // The Steiner vertices of the guide frame only set the figure
-        // vertices' trust and weights (any positive weights give a valid
-        // frame), and a guide frame that is output is checked exactly like
-        // any other: nine digits are plenty, and keep a frame scrubbed in
-        // any order within about 1e-9 of the same frame solved in order.
         // The blended frame is the solution of [17]'s system, to the ten
         // digits of MorphSolver.
+        // The Steiner vertices of the guide frame placed by weights only set
+        // the figure vertices' trust and weights (any positive weights give a
+        // valid frame), and a guide frame that is output is checked exactly
+        // like any other: nine digits are plenty, and keep a frame scrubbed
+        // in any order within about 1e-9 of the same frame solved in order.
         steiner_system(topo, steiner_rows(tri), 1e-9),
+        placement(tri, source.edges, normalised_turns(tri, source, similarity, *guide)),
         full_system(topo, topo.interior_nodes, 1e-10) {
     std::size_t largest = 0;
     for (const std::vector<int>& ring : topo.ring) largest = std::max(largest, ring.size());
     corner_scratch.resize(largest);
-  }
-
-  static std::vector<int> steiner_rows(const FigureTriangulation& tri) {
-    std::vector<int> rows;
-    for (int v = tri.figure_vertices + tri.enclosure_vertices; v < tri.node_count(); ++v) rows.push_back(v);
-    return rows;
   }
 
   const FigureTriangulation tri;  // normalised
@@ -122,9 +147,24 @@ struct GuidedMorph::State {
   const Topology topo;
   std::vector<std::vector<double>> w0, w1;  // per node, over topo.ring (interior nodes only)
   std::vector<std::vector<double>> wt;      // the blend at the current u
-  ConvexCombinationSystem steiner_system;
+  static std::vector<int> steiner_rows(const FigureTriangulation& tri) {
+    std::vector<int> rows;
+    for (int v = tri.figure_vertices + tri.enclosure_vertices; v < tri.node_count(); ++v) rows.push_back(v);
+    return rows;
+  }
+
+  // Step 2's two placements of the guide frame's Steiner vertices, and the
+  // share of the rigid one (sample_guide chooses it per morph).
+  ConvexCombinationSystem steiner_system;  // by the blended weights W(u)
+  RigidSteinerPlacement placement;         // as rigidly as possible
+  double rigid_share = 0;
+  // The nodes whose stars decide trust: the figure's vertices, and with
+  // rigid_share > 0 the Steiner vertices too (placed by W(u) alone they are
+  // convex combinations of their neighbours, valid when the figure
+  // vertices' stars are, by Tutte's theorem).
+  std::vector<int> judged;
   ConvexCombinationSystem full_system;
-  std::vector<double> full_trust_margin;  // per figure vertex, see trust()
+  std::vector<double> full_trust_margin;  // per interior node, see trust()
   mutable std::vector<double> corner_scratch;  // star_margin's, one per neighbour of the largest ring
   // guided_frame's: the blended weights of every figure vertex, and the
   // offsets and mean value weights of one star.
@@ -136,7 +176,7 @@ struct GuidedMorph::State {
   // cumulative motion there if it leaves the guide (else empty).
   std::vector<double> sample_u;
   std::vector<std::vector<float>> trust_samples;
-  std::vector<char> sampled_below_one;  // per figure vertex: some trust_samples below 1 (empty: not known yet)
+  std::vector<char> sampled_below_one;  // per node: some trust_samples below 1 (empty: not known yet)
   std::optional<MotionTiming> own_timing;  // the morph's own motion at the samples (none: it follows the guide)
   std::optional<MorphSolver> fallback;  // [8] itself, made on first need
   GuidedMorphStats stats;
@@ -152,16 +192,57 @@ struct GuidedMorph::State {
       for (std::size_t j = 0; j < wt[v].size(); ++j) wt[v][j] = (1 - u) * w0[v][j] + u * w1[v][j];
   }
 
-  // Steps 1-2: the guide frame in normalised space.
-  std::vector<Vec2> guide_frame(double u) {
+  // Steps 1-2: the guide frame in normalised space, its Steiner vertices
+  // placed by W(u) (weighted), as rigidly as possible (rigid), or the
+  // share `rigid` of the way from the first to the second.
+  std::vector<Vec2> guide_frame(double u) { return guide_frame(u, rigid_share); }
+  std::vector<Vec2> guide_frame(double u, double rigid) {
     const std::vector<Vec2> figure = similarity.unapply(u, guide->at(u));
     std::vector<Vec2> g = tri.source;  // the enclosure is fixed
     std::copy(figure.begin(), figure.end(), g.begin());
-    // The Steiner nodes' values in g are not a warm start: the system
-    // iterates from its own (warm_start).
-    if (!steiner_system.solve(u, [&](int v) -> const std::vector<double>& { return wt[v]; }, g))
-      throw VerificationError("the rigid morph's Steiner system at u = " + format_double(u) + " is singular");
+    std::vector<Vec2> weighted, placed;
+    if (rigid < 1) {
+      weighted = g;
+      // The Steiner nodes' values are not a warm start: the system iterates
+      // from its own (warm_start).
+      if (!steiner_system.solve(u, [&](int v) -> const std::vector<double>& { return wt[v]; }, weighted))
+        throw VerificationError("the rigid morph's Steiner system at u = " + format_double(u) + " is singular");
+    }
+    if (rigid > 0) {
+      placed = g;
+      if (!placement.place(u, placed))
+        throw VerificationError("the rigid morph's Steiner placement at u = " + format_double(u) + " failed");
+    }
+    if (rigid <= 0) return weighted;
+    if (rigid >= 1) return placed;
+    for (int v = tri.figure_vertices + tri.enclosure_vertices; v < tri.node_count(); ++v)
+      for (int c = 0; c < 2; ++c) g[v][c] = (1 - rigid) * weighted[v][c] + rigid * placed[v][c];
     return g;
+  }
+
+  // The mean over the figure's edges of how much longer or shorter each is
+  // in p than in the guide frame g, over the longer of its source and
+  // target lengths (both normalised): the edge-length deviation a frame adds
+  // to the guide's own.
+  double edge_length_departure(const std::vector<Vec2>& p, const std::vector<Vec2>& g) const {
+    if (source.edges.empty()) return 0;
+    double sum = 0;
+    for (const Edge& e : source.edges) {
+      const auto length = [&](const std::vector<Vec2>& x) {
+        return std::hypot(x[e[1]][0] - x[e[0]][0], x[e[1]][1] - x[e[0]][1]);
+      };
+      const double longest = std::max(length(tri.source), length(tri.target));
+      if (longest > 0) sum += std::abs(length(p) - length(g)) / longest;
+    }
+    return sum / double(source.edges.size());
+  }
+
+  // The nodes whose trust counts with that share of rigid placement.
+  std::vector<int> judged_nodes(double rigid) const {
+    std::vector<int> nodes;
+    for (int v : topo.interior_nodes)
+      if (v < tri.figure_vertices || rigid > 0) nodes.push_back(v);
+    return nodes;
   }
 
   // The sine of the smallest corner angle at v of its star in p, or 0 if
@@ -271,35 +352,79 @@ struct GuidedMorph::State {
   void sample_guide() {
     const int n = tri.figure_vertices;
     sample_u.assign(kTrustSamples + 1, 0.0);
-    trust_samples.assign(kTrustSamples + 1, std::vector<float>(n, 1.0f));
-    std::vector<std::vector<Vec2>> guide_frames(kTrustSamples + 1);
+    trust_samples.assign(kTrustSamples + 1, std::vector<float>(std::size_t(tri.node_count()), 1.0f));
+    // The guide frame at each sample with either placement of its Steiner
+    // vertices (step 2), and the one that the guide can be trusted with at
+    // more samples (see below): the
+    // rigid placement follows the figure's turns, W(u) the barycentric
+    // morph, and neither is better on every pair (a long thin fan from the
+    // enclosure to a stroke that slides sideways keeps its shape under W(u)
+    // and not when placed rigidly). One placement for the whole morph, so
+    // the guide frame and the trust stay continuous in time.
+    std::vector<std::vector<Vec2>> weighted(kTrustSamples + 1), placed(kTrustSamples + 1);
     for (int j = 0; j <= kTrustSamples; ++j) {
       sample_u[j] = guide->parameter_at(sample_time(j), Easing::None);
       if (j == 0 || j == kTrustSamples) continue;  // the inputs themselves
       blend_weights(sample_u[j]);
-      guide_frames[j] = guide_frame(sample_u[j]);
-      for (int v = 0; v < n; ++v) trust_samples[j][v] = float(trust(guide_frames[j], v));
+      weighted[j] = guide_frame(sample_u[j], 0);
+      if (tri.steiner_vertices > 0) placed[j] = guide_frame(sample_u[j], 1);
     }
-    sampled_below_one.assign(std::size_t(n), 0);
+    auto score = [&](const std::vector<std::vector<Vec2>>& frames, double rigid) {
+      int trusted = 0;
+      double deficit = 0;
+      for (int j = 1; j < kTrustSamples; ++j) {
+        bool all = true;
+        for (int v : judged_nodes(rigid)) {
+          const double a = trust(frames[j], v);
+          deficit += 1 - a;
+          all = all && a >= 1;
+        }
+        trusted += all;
+      }
+      return std::pair<int, double>(trusted, -deficit);
+    };
+    const std::pair<int, double> by_weights = score(weighted, 0);
+    const std::pair<int, double> by_placement = tri.steiner_vertices > 0 ? score(placed, 1) : by_weights;
+    // The rigid placement only where it follows the guide at every sample
+    // and W(u) does not, or at two samples more: on a near tie a last-bit
+    // change of the inputs (a dummy vertex placed by another fit) would
+    // otherwise switch the placement, and the motion with it.
+    const int all = kTrustSamples - 1;
+    rigid_share = by_placement.first > by_weights.first &&
+                          (by_placement.first == all || by_placement.first >= by_weights.first + 2)
+                      ? 1
+                      : 0;
+    stats.trusted_samples = (rigid_share > 0 ? by_placement : by_weights).first;
+    stats.samples = kTrustSamples - 1;
+    stats.rigid_steiner_placement = rigid_share > 0;
+    judged = judged_nodes(rigid_share);
+    const std::vector<std::vector<Vec2>>& guide_frames = rigid_share > 0 ? placed : weighted;
+    for (int j = 1; j < kTrustSamples; ++j)
+      for (int v : judged) trust_samples[j][v] = float(trust(guide_frames[j], v));
+    sampled_below_one.assign(std::size_t(tri.node_count()), 0);
     for (int j = 0; j <= kTrustSamples; ++j)
-      for (int v = 0; v < n; ++v)
+      for (int v : judged)
         if (!(trust_samples[j][v] >= 1.0f)) sampled_below_one[std::size_t(v)] = 1;
     std::vector<std::vector<Vec2>> figure(kTrustSamples + 1);
     figure[0].assign(tri.source.begin(), tri.source.begin() + n);
     figure[kTrustSamples] = similarity.apply(1.0, std::vector<Vec2>(tri.target.begin(), tri.target.begin() + n));
     bool leaves_guide = false;
+    double departure = 0;
     for (int j = 1; j < kTrustSamples; ++j) {
       bool exact = true;
-      for (int v = 0; v < n && exact; ++v) exact = trust_at(guide_frames[j], sample_u[j], v) >= 1;
+      for (std::size_t r = 0; r < judged.size() && exact; ++r)
+        exact = trust_at(guide_frames[j], sample_u[j], judged[r]) >= 1;
       std::vector<Vec2> p = guide_frames[j];
       if (!exact) {
         blend_weights(sample_u[j]);
         bool ignored = false;
         p = guided_frame(guide_frames[j], sample_u[j], ignored);
         leaves_guide = true;
+        departure += edge_length_departure(p, guide_frames[j]);
       }
       figure[j] = similarity.apply(sample_u[j], std::vector<Vec2>(p.begin(), p.begin() + n));
     }
+    stats.guide_departure = departure / (kTrustSamples - 1);
     own_timing.reset();
     if (!leaves_guide || !guide->retimed_by_morph()) return;
     // As RigidGuide::parameter_at: a morph that does not move beyond
@@ -333,26 +458,29 @@ struct GuidedMorph::State {
     return guide->parameter_at(own_timing->at(eased), Easing::None);
   }
 
-  // Steps 3-4: the guide frame when every figure vertex trusts it fully,
+  // Steps 3-4: the guide frame when every interior node trusts it fully,
   // otherwise guide weights where the guide's stars are valid. `exact`
-  // tells which.
-  std::vector<Vec2> guided_frame(const std::vector<Vec2>& g, double u, bool& exact) {
-    std::vector<double> trusts(tri.figure_vertices);
+  // tells which; `solve` asks for the solve even then (its weights, mean
+  // value coordinates of the guide frame everywhere, reproduce it: a frame
+  // that rounding spoiled is refined from there).
+  std::vector<Vec2> guided_frame(const std::vector<Vec2>& g, double u, bool& exact, bool solve = false) {
+    std::vector<double> trusts(std::size_t(tri.node_count()), 0.0);
     exact = true;
-    for (int v = 0; v < tri.figure_vertices; ++v) {
+    for (int v : judged) {
       trusts[v] = trust_at(g, u, v);
       if (trusts[v] < 1) exact = false;
     }
-    // Every figure vertex's weights reproduce g (its star is valid there)
-    // and every Steiner vertex's do by construction (guide_frame), so g is
-    // the solution of a system with positive weights: a valid
-    // triangulation by Tutte's theorem, up to the rounding that the exact
-    // check of the output frame catches.
-    if (exact) return g;
+    // Every judged node's star is valid in g, so its mean value weights
+    // there are positive and reproduce it, and every other interior node
+    // (a Steiner vertex placed by W(u)) is reproduced by W(u): g is the
+    // solution of a system with positive weights, a valid triangulation by
+    // Tutte's theorem, up to the rounding that the exact check of the
+    // output frame catches.
+    if (exact && !solve) return g;
     // Into storage kept between frames (mixed, offset_scratch,
     // weight_scratch): a frame's thousand small allocations were 5% of it.
-    mixed.resize(std::size_t(tri.figure_vertices));
-    for (int v = 0; v < tri.figure_vertices; ++v) {
+    mixed.resize(std::size_t(tri.node_count()));
+    for (int v : topo.interior_nodes) {
       const double a = trusts[v];
       mixed[v] = wt[v];
       if (a <= 0) continue;
@@ -362,8 +490,7 @@ struct GuidedMorph::State {
         mixed[v][j] = a * weight_scratch[j] + (1 - a) * wt[v][j];
     }
     std::vector<Vec2> x = tri.source;
-    const bool ok = full_system.solve(
-        u, [&](int v) -> const std::vector<double>& { return v < tri.figure_vertices ? mixed[v] : wt[v]; }, x);
+    const bool ok = full_system.solve(u, [&](int v) -> const std::vector<double>& { return mixed[v]; }, x);
     if (!ok) throw VerificationError("the rigid morph's blended system is singular");
     return x;
   }
@@ -401,18 +528,18 @@ GuidedMorph::GuidedMorph(const FigureTriangulation& normalised, const StickFigur
   // trusted fully whatever the ends look like: about 6 degrees, where mean
   // value weights near a flat corner start to dominate a row.
   constexpr double kMostTrustMargin = 0.1;
-  s.full_trust_margin.resize(tri.figure_vertices);
-  for (int v = 0; v < tri.figure_vertices; ++v) {
+  s.full_trust_margin.assign(std::size_t(tri.node_count()), 1.0);
+  for (int v : s.topo.interior_nodes) {
     const double ends = std::min(s.star_margin(tri.source, v), s.star_margin(tri.target, v));
     // Both ends are valid triangulations, so ends > 0 unless it underflows.
     s.full_trust_margin[v] = std::max(std::min(kMostTrustMargin, 0.5 * ends), 1e-12);
   }
   auto start = Clock::now();
   s.sample_guide();
+  s.steiner_system.begin_playback();
   // The sampled solves' factorizations are not kept as anchors: a playback
   // in order then solves bit for bit as with one anchor (issue 29; see
   // ConvexCombinationSystem::begin_playback).
-  s.steiner_system.begin_playback();
   s.full_system.begin_playback();
   s.stats.guide_ms += ms_since(start);
   s.count_factorizations();
@@ -483,13 +610,16 @@ GuidedFrame GuidedMorph::frame(double t, int frame, bool verify, const std::stri
   // Rounding can flip a triangle thinner than doubles resolve here as in
   // the barycentric frame (checked_morph_frame), and the same two repairs
   // keep the figure where the guide put it, which the fallback below would
-  // not: the solve refined in long double (the blended system's, or the
-  // Steiner system's for the guide frame itself), then Steiner vertices of
-  // inverted triangles moved into their stars' kernels. Each is checked
-  // again like any frame.
+  // not: the solve refined in long double (the blended system's; for the
+  // guide frame itself the Steiner system's, or with the rigid placement
+  // the blended system with the guide frame's own mean value weights, which
+  // reproduce it), then Steiner vertices of inverted
+  // triangles moved into their stars' kernels. Each is checked again like
+  // any frame.
   {
     start = Clock::now();
-    (exact ? s.steiner_system : s.full_system).refine(normalised, kRefinementRounds);
+    if (exact && s.rigid_share > 0) normalised = s.guided_frame(g, u, exact, true);
+    (exact && s.rigid_share == 0 ? s.steiner_system : s.full_system).refine(normalised, kRefinementRounds);
     std::vector<Vec2> repaired = s.similarity.apply(u, normalised);
     s.stats.solve_ms += ms_since(start);
     if (defect_of(repaired).empty() ||

@@ -15,18 +15,26 @@
 //   1. the guide (RigidGuide, ARAP on the figure's edges, in output space)
 //      is mapped back by the similarity (similarity_motion.h) into the
 //      normalised morph's space, where the enclosure is fixed;
-//   2. the Steiner vertices are placed by the blended weights of [8] with
-//      the figure held at the guide (a small solve: Steiner unknowns only);
-//      that is the guide frame G;
-//   3. if every triangle of G is counter-clockwise (exact), G is the frame:
-//      with the fixed convex enclosure that makes it a triangulation with
-//      the source's connectivity (the theorem in morph_topology.h);
-//   4. otherwise every figure vertex v takes the weights
+//   2. the Steiner vertices are placed as rigidly as possible with the
+//      figure held at the guide (internal/rigid_steiner_placement.h: every
+//      triangle's source-to-target map interpolated as Alexa et al. 2000
+//      do, turning the way the guide turns its figure edges, and the
+//      Steiner vertices the least-squares fit; one factorization, a
+//      right-hand side per frame); that is the guide frame G. Issue 30:
+//      placed by the blended weights of [8], as before, they followed the
+//      barycentric morph rather than the guide, and inverted triangles
+//      beside a figure that was itself fine;
+//   3. if every interior node (figure and Steiner vertex) trusts G fully
+//      (its star there valid and not much thinner than at the ends), G is
+//      the frame: the mean value weights of every star reproduce G and are
+//      positive, so with the fixed convex enclosure G is a triangulation
+//      with the source's connectivity by Tutte's theorem (morph_topology.h);
+//   4. otherwise every interior node v takes the weights
 //      a_v MVC_G(v) + (1 - a_v) W(u)_v, where a_v in [0, 1] falls smoothly to
 //      0 as v's star in G approaches invalid (so that nothing pops between
-//      frames), Steiner vertices keep W(u); all weights are positive and sum
-//      to 1, so the solve is valid by Tutte's theorem, and as close to the
-//      guide as the valid stars allow;
+//      frames); all weights are positive and sum to 1, so the solve is
+//      valid by Tutte's theorem, and as close to the guide as the valid
+//      stars allow;
 //   5. the frame is moved by the similarity at u, and checked exactly in
 //      output space: every triangle counter-clockwise with the enclosure a
 //      convex polygon (a similarity image, no longer fixed: a triangulated
@@ -75,11 +83,26 @@ struct GuidedMorphStats {
   int exact_frames = 0;        ///< interior frames that are the guide frame
   int blended_frames = 0;      ///< interior frames that follow the guide where its stars are valid
   int barycentric_frames = 0;  ///< interior frames that fell back to [8]
-  double guide_ms = 0;         ///< the guide and the Steiner solve (steps 1-2)
+  double guide_ms = 0;         ///< the guide and the Steiner placement (steps 1-2)
   double solve_ms = 0;         ///< the blended solves (step 4) and fallbacks
   double verify_ms = 0;        ///< exact checks
   int refined_frames = 0;
-  /// Numeric LU factorizations of the Steiner and the blended systems, set-up
+  /// Of the guide frames sampled at set-up (kTrustSamples - 1 interior
+  /// samples), how many every judged node trusts fully: where the guide is
+  /// followed exactly. The rigid method's set-up compares triangulations by
+  /// it.
+  int trusted_samples = 0;
+  int samples = 0;
+  /// Over the same samples, how far the frames the morph makes there depart
+  /// from the guide: each frame's mean over the figure's edges of the
+  /// difference of its length from the guide's, over the longer of its two
+  /// end lengths (the edge-length deviation it adds), averaged over the
+  /// samples (0 where a sample is the guide).
+  double guide_departure = 0;
+  /// Step 2's placement of the guide frame's Steiner vertices: true if as
+  /// rigidly as possible, false if by the blended weights W(u).
+  bool rigid_steiner_placement = false;
+  /// Numeric LU factorizations of the blended system, set-up
   /// included (the rest are iterations on the latest one, as MorphSolver's).
   int factorizations = 0;
 };
@@ -118,9 +141,9 @@ class GuidedMorph {
   /// time), `context` leads them. With `verify`, every frame is checked
   /// exactly as described above.
   ///
-  /// Scrubbing (issue 29): each of the two systems (the Steiner solve of
-  /// step 2, the blended solve of step 4) keeps up to 16 factorizations
-  /// (anchors, at most 256 MiB of factors per system; at 10^4 vertices
+  /// Scrubbing (issue 29): the Steiner placement of step 2 is factorized
+  /// once and exact per frame; the blended solve of step 4 keeps up to 16 factorizations
+  /// (anchors, at most 256 MiB of factors; at 10^4 vertices
   /// 1-8 MiB each) and 32 solutions, and iterates on the anchor nearest in
   /// the morph parameter from the solutions nearest to it, as MorphSolver
   /// does; it factorizes only when that iteration does not converge, and

@@ -5,7 +5,8 @@ import math
 import numpy as np
 import pytest
 
-RIGID_STATS = {"rotation", "turns", "easing", "similarity_factored", "similarity", "guide_frames"}
+RIGID_STATS = {"rotation", "turns", "easing", "similarity_factored", "similarity", "guide_frames",
+               "refinement_steiner_vertices"}
 
 
 def check_rigid_section(stats, source_vertices, target_vertices, frames, rotation="short", turns=0,
@@ -38,6 +39,8 @@ def check_rigid_section(stats, source_vertices, target_vertices, frames, rotatio
     assert all(type(v) is int and v >= 0 for v in guide.values())
     # Every interior frame is made one way or another.
     assert sum(guide.values()) == frames - 2
+    refinement = rigid["refinement_steiner_vertices"]
+    assert type(refinement) is int and 0 <= refinement <= stats["steiner_vertices"]
     # The rigid morph's factorizations are those of its own systems (set-up included); its set-up
     # time is reported as "factorize", part of the morph's.
     milliseconds = stats["milliseconds"]

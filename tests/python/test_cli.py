@@ -29,6 +29,8 @@ COMPATIBLE = [
     "single_edge",         # target lists the edge reversed
     "square_with_spikes",  # dangling edges inside and outside a loop, edges shuffled
     "wheel",               # a triangulation: hub joined to a square's corners
+    "glyph_L_to_V",        # a stroke letter L into a V (bench/motion_corpus.py, seed 31)
+    "glyph_7_to_L",        # a stroke letter 7 into an L (seed 5)
 ]
 
 # name -> pattern the reason must match (it names the vertices involved).

@@ -129,13 +129,16 @@ def test_pins_for_drawn_keys(drawn):
         stickmorph.morph_key_poses(keys, edges[:2], correspond="auto")
     free = stickmorph.morph_key_poses(keys, edges, correspond="auto", frames=21)
     # Pin, for the second pair, what the free match found: the same match (the dummies' places
-    # may differ in the last bits: the pinned search fits its own similarity).
+    # may differ in the last bits: the pinned search fits its own similarity). The frames are not
+    # compared: compatible refinement's choices (issue 30) follow those last bits, and where a
+    # segment leaves its guide the motion follows the triangulation.
     p1, p2 = free["places"][1]["vertex"], free["places"][2]["vertex"]
     i = next(i for i in range(len(p1)) if p1[i] >= 0 and p2[i] >= 0)
     pinned = stickmorph.morph_key_poses(keys, edges, correspond="auto", frames=21, pins=[[], [(int(p1[i]), int(p2[i]))]])
     for a, b in zip(free["places"], pinned["places"]):
         assert np.array_equal(a["vertex"], b["vertex"]) and np.array_equal(a["edge"], b["edge"])
-    assert np.allclose(pinned["frames"], free["frames"], rtol=0, atol=1e-12)
+    for f in free["keys_at"]:
+        assert np.allclose(pinned["frames"][f], free["frames"][f], rtol=0, atol=1e-12)
 
 
 def test_the_solver_scrubs_any_frame_in_any_order_and_any_time(sequence, drawn):

@@ -28,6 +28,7 @@ struct RigidMotionReport {
   int exact_frames = 0;            ///< interior frames that are the rigid guide itself
   int blended_frames = 0;          ///< interior frames following the guide where it is valid
   int barycentric_frames = 0;      ///< interior frames that fell back to the paper's morph
+  int refinement_steiner = 0;      ///< Steiner vertices compatible refinement added (issue 30)
 };
 
 struct MorphProvenance {
