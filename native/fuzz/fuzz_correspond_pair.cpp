@@ -333,11 +333,6 @@ std::string describe_pins(const std::vector<VertexPin>& pins) {
 
 void morph_matched(const PairInput& input, const FigureCorrespondence& c);
 
-// True when two vertices of one figure are closer than 2^-40 of that
-// figure's extent. The header lets correspond_figures refuse such a pair
-// with a VerificationError: the dummies it places on the other figure's
-// edges (a + f (b - a), f from arc length) cannot then be told apart in
-// double precision. Above this resolution a VerificationError is a finding.
 // The ratio of the two figures' sizes (the larger side of each bounding
 // box), as the rigid method's range check measures it; 1 when either is a
 // single point.
@@ -356,6 +351,14 @@ double size_ratio(const StickFigure& a, const StickFigure& b) {
   return std::max(sa / sb, sb / sa);
 }
 
+// True when two vertices of one figure are closer than 2^-40 of that
+// figure's extent, or a vertex is that close to an edge it does not end.
+// The header lets correspond_figures refuse such a pair with a
+// VerificationError: the dummies it places on the other figure's edges
+// (a + f (b - a), f from arc length) cannot then be told apart in double
+// precision, and a dummy rounded off its edge by part of a unit in the last
+// place turns the piece of edge it ends, which can then cross an edge that
+// close to it. Above this resolution a VerificationError is a finding.
 bool below_resolution(const StickFigure& figure) {
   if (figure.vertices.size() < 2) return false;
   double lo[2] = {figure.vertices[0][0], figure.vertices[0][1]}, hi[2] = {lo[0], lo[1]};
@@ -364,13 +367,28 @@ bool below_resolution(const StickFigure& figure) {
       lo[axis] = std::min(lo[axis], v[axis]);
       hi[axis] = std::max(hi[axis], v[axis]);
     }
-  const double extent = std::max(hi[0] - lo[0], hi[1] - lo[1]);
-  const double finest = std::ldexp(extent, -40);
-  for (std::size_t i = 0; i < figure.vertices.size(); ++i)
-    for (std::size_t j = i + 1; j < figure.vertices.size(); ++j)
-      if (std::max(std::abs(figure.vertices[i][0] - figure.vertices[j][0]),
-                   std::abs(figure.vertices[i][1] - figure.vertices[j][1])) < finest)
-        return true;
+  const double extent = std::max(hi[0] / 2 - lo[0] / 2, hi[1] / 2 - lo[1] / 2) * 2;  // halves: no overflow
+  const double finest = std::ldexp(1.0, -40);
+  if (extent == 0) return false;
+  // Measured in units of the extent, from the box's corner: no overflow in
+  // the squares below, whatever the coordinates' magnitude.
+  std::vector<Vec2> unit;
+  unit.reserve(figure.vertices.size());
+  for (const Vec2& v : figure.vertices) unit.push_back({(v[0] - lo[0]) / extent, (v[1] - lo[1]) / extent});
+  for (std::size_t i = 0; i < unit.size(); ++i)
+    for (std::size_t j = i + 1; j < unit.size(); ++j)
+      if (std::max(std::abs(unit[i][0] - unit[j][0]), std::abs(unit[i][1] - unit[j][1])) < finest) return true;
+  for (const Edge& e : figure.edges) {
+    const Vec2& a = unit[std::size_t(e[0])];
+    const Vec2& b = unit[std::size_t(e[1])];
+    const double dx = b[0] - a[0], dy = b[1] - a[1], length2 = dx * dx + dy * dy;
+    if (length2 == 0) continue;
+    for (std::size_t v = 0; v < unit.size(); ++v) {
+      if (int(v) == e[0] || int(v) == e[1]) continue;
+      const double t = std::clamp(((unit[v][0] - a[0]) * dx + (unit[v][1] - a[1]) * dy) / length2, 0.0, 1.0);
+      if (std::hypot(unit[v][0] - (a[0] + t * dx), unit[v][1] - (a[1] + t * dy)) < finest) return true;
+    }
+  }
   return false;
 }
 
