@@ -196,7 +196,7 @@ FigureCorrespondence correspond_connected(const StickFigure& source, const Stick
     result.target = make_stick_figure(std::move(target_positions), edges, target.name);
   } catch (const InvalidFigureError& error) {
     throw VerificationError(std::string("correspond: the matched figure cannot be drawn in floating point: ") +
-                            error.what() + " (vertices of one drawing closer together than the other's rounding)");
+                            error.what() + " (vertices of one drawing closer together, or to an edge, than the other's rounding)");
   }
   CompatibilityReport report;
   result.pair = CompatiblePair::try_check(result.source, decompose(result.source), result.target,
