@@ -27,6 +27,9 @@
 #                       rigid (if `stickmorph morph --help` lists it),
 #                       barycentric, linear and arap; filmstrips of the worst
 #                       pairs go to docs/benchmarks/motion/
+#   motion_before.json  not written here: an earlier run's motion.json on the same
+#                       corpus, copied in by hand with a "label" (its commit), shown
+#                       as the "before" rows of issue 30's table when present
 #   key_pose_corpus/    bench/key_pose_corpus.py --redrawn: key-pose sequences
 #   sequences.json      bench/sequence_motion.py on it (issue 28): the sequence
 #                       morph against chained pair morphs and straight-line

@@ -32,6 +32,17 @@ def read_motion(data_dir):
             motion[key]  # noqa: B018 - only the KeyError matters
     except (OSError, ValueError, KeyError) as error:
         raise InputError(f"{path}: {error}") from error
+    # An earlier run on the same corpus, kept by hand as motion_before.json with a "label" (the
+    # commit it measured): issue 30's table shows it as "before".
+    before_path = os.path.join(data_dir, "motion_before.json")
+    if os.path.exists(before_path):
+        try:
+            with open(before_path, encoding="utf-8") as f:
+                motion["before"] = json.load(f)
+            for key in ("methods", "pairs", "label"):
+                motion["before"][key]  # noqa: B018 - only the KeyError matters
+        except (OSError, ValueError, KeyError) as error:
+            raise InputError(f"{before_path}: {error}") from error
     return motion
 
 
@@ -64,22 +75,27 @@ def _guide_and_shape(motion, methods):
     figure's own edges (the `arap` reference) on the pairs where that motion stays valid, the
     share of frames that are the guide itself, and the shape of the compatible triangulation.
     Markdown blocks; empty when the run measured none of it."""
-    measured = [m for m in methods if m not in REFERENCES
-                and any("triangle_min_angle_deg" in r for _, _, r in _motion_rows(motion, m))]
+    def measured_in(run):
+        return [m for m in run["methods"] if m not in REFERENCES
+                and any("triangle_min_angle_deg" in r for _, _, r in _motion_rows(run, m))]
+    measured = [(motion, m, f"**{m}**") for m in measured_in(motion) if m in methods]
     if not measured:
         return []
+    before = motion.get("before")
+    if before:
+        measured = [(before, m, f"{m}, before (`{before['label']}`)") for m in measured_in(before)] + measured
     valid = {name for name, p in motion["pairs"].items()
              if isinstance(p.get("arap"), dict) and p["arap"].get("bad_frames") == []}
     rows = []
-    for m in measured:
-        results = _motion_rows(motion, m)
+    for run, m, label in measured:
+        results = _motion_rows(run, m)
         close = [name for name, p, r in results
                  if name in valid and r["edge_dev"] - p["arap"]["edge_dev"] <= ISSUE30["within"]]
         judged = [name for name, _, r in results if name in valid]
         angles = [r["triangle_min_angle_deg"] for _, _, r in results if "triangle_min_angle_deg" in r]
         steiner = [r["steiner_per_vertex"] for _, _, r in results if "steiner_per_vertex" in r]
         exact = [r["exact_frame_share"] for _, _, r in results if "exact_frame_share" in r]
-        rows.append([f"**{m}**", f"{len(close)}/{len(judged)}" + (f" ({len(close) / len(judged):.0%})" if judged else ""),
+        rows.append([label, f"{len(close)}/{len(judged)}" + (f" ({len(close) / len(judged):.0%})" if judged else ""),
                      _num(_p([r["edge_dev"] for _, _, r in results], 0.9), ".3f"),
                      _num(_median(exact), ".0%") if exact else "–",
                      _num(_median(angles), ".2f"), _num(_p(angles, 0.1), ".2f"), _num(min(angles), ".3f"),
@@ -92,7 +108,9 @@ def _guide_and_shape(motion, methods):
             f"frame: how many morphs stay within {ISSUE30['within']:g} edge-length deviation of it. Exact frames: "
             "the median share of interior frames that are the rigid guide itself (`stats.rigid.guide_frames`). "
             "The smallest angle, in degrees, over every triangle of the compatible triangulation the morph used, "
-            "in both embeddings, per pair; Steiner vertices per figure vertex.\n",
+            "in both embeddings, per pair; Steiner vertices per figure vertex."
+            + (f" The rows marked before are the same corpus measured at `{before['label']}` "
+               "(`motion_before.json`, an earlier run kept for the comparison)." if before else "") + "\n",
             table(["method", f"within {ISSUE30['within']:g} of arap", "edge dev p90", "exact frames median",
                    "smallest angle ° median", "p10", "min", "Steiner / vertex median"], rows,
                   ["---"] + ["--:"] * 7),

@@ -3,6 +3,7 @@ BENCHMARKS.md from bench/motion_quality.py's motion.json (issue 12, item 6): on 
 hand-made motion.json whose numbers are known, and once through the script's command line
 with a minimal data folder. Needs only Debian's python3 with matplotlib, no build.
 """
+import copy
 import json
 import pathlib
 import subprocess
@@ -266,3 +267,31 @@ def test_following_the_guide_and_the_triangulation_shape(tmp_path):
 
 def test_without_shapes_there_is_no_issue_30_table(tmp_path):
     assert "(issue 30)" not in section(tiny_motion(), tmp_path)
+
+
+def test_an_earlier_run_is_shown_before(tmp_path):
+    """motion_before.json (an earlier run on the same corpus, with its label) adds a "before"
+    row per measured method above the current ones; judged against the current arap validity."""
+    motion = tiny_motion()
+    before = copy.deepcopy(motion)
+    for name, (angle, steiner, exact) in {"glyph_J_to_U": (2.0, 0.1, 0.5),
+                                          "special_self_turn_180": (8.0, 0.3, 1.0)}.items():
+        motion["pairs"][name]["rigid"].update(triangle_min_angle_deg=angle, steiner_per_vertex=steiner,
+                                              exact_frame_share=exact)
+        before["pairs"][name]["rigid"].update(triangle_min_angle_deg=angle / 4, steiner_per_vertex=0.0,
+                                              exact_frame_share=exact / 2, edge_dev=0.05)
+    motion["pairs"]["special_self_turn_180"]["arap"]["bad_frames"] = []
+    data = tmp_path / "data"
+    data.mkdir()
+    (data / "motion.json").write_text(json.dumps(motion))
+    (data / "motion_before.json").write_text(json.dumps(dict(before, label="abc1234")))
+    text = section(mb.read_motion(str(data)), tmp_path)
+    assert "measured at `abc1234`" in text
+    old = table_row(text, "rigid, before (`abc1234`)")
+    assert old[1] == "0/1 (0%)" and old[4] == "1.25"
+    new = [line for line in text.splitlines() if line.startswith("| **rigid** |")][1]
+    assert "1/1 (100%)" in new
+    # without its label the earlier run is an incomplete input
+    (data / "motion_before.json").write_text(json.dumps(before))
+    with pytest.raises(mb.InputError, match="motion_before.json"):
+        mb.read_motion(str(data))
