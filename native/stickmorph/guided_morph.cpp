@@ -153,13 +153,13 @@ struct GuidedMorph::State {
     return rows;
   }
 
-  // Step 2's two placements of the guide frame's Steiner vertices, and the
-  // share of the rigid one (sample_guide chooses it per morph).
+  // Step 2's two placements of the guide frame's Steiner vertices, and
+  // which one this morph uses (sample_guide chooses).
   ConvexCombinationSystem steiner_system;  // by the blended weights W(u)
   RigidSteinerPlacement placement;         // as rigidly as possible
-  double rigid_share = 0;
+  bool rigid_placement = false;
   // The nodes whose stars decide trust: the figure's vertices, and with
-  // rigid_share > 0 the Steiner vertices too (placed by W(u) alone they are
+  // rigid_placement the Steiner vertices too (placed by W(u) alone they are
   // convex combinations of their neighbours, valid when the figure
   // vertices' stars are, by Tutte's theorem).
   std::vector<int> judged;
@@ -193,30 +193,21 @@ struct GuidedMorph::State {
   }
 
   // Steps 1-2: the guide frame in normalised space, its Steiner vertices
-  // placed by W(u) (weighted), as rigidly as possible (rigid), or the
-  // share `rigid` of the way from the first to the second.
-  std::vector<Vec2> guide_frame(double u) { return guide_frame(u, rigid_share); }
-  std::vector<Vec2> guide_frame(double u, double rigid) {
+  // placed by W(u) or (rigid) as rigidly as possible.
+  std::vector<Vec2> guide_frame(double u) { return guide_frame(u, rigid_placement); }
+  std::vector<Vec2> guide_frame(double u, bool rigid) {
     const std::vector<Vec2> figure = similarity.unapply(u, guide->at(u));
     std::vector<Vec2> g = tri.source;  // the enclosure is fixed
     std::copy(figure.begin(), figure.end(), g.begin());
-    std::vector<Vec2> weighted, placed;
-    if (rigid < 1) {
-      weighted = g;
-      // The Steiner nodes' values are not a warm start: the system iterates
-      // from its own (warm_start).
-      if (!steiner_system.solve(u, [&](int v) -> const std::vector<double>& { return wt[v]; }, weighted))
-        throw VerificationError("the rigid morph's Steiner system at u = " + format_double(u) + " is singular");
-    }
-    if (rigid > 0) {
-      placed = g;
-      if (!placement.place(u, placed))
+    if (rigid) {
+      if (!placement.place(u, g))
         throw VerificationError("the rigid morph's Steiner placement at u = " + format_double(u) + " failed");
+      return g;
     }
-    if (rigid <= 0) return weighted;
-    if (rigid >= 1) return placed;
-    for (int v = tri.figure_vertices + tri.enclosure_vertices; v < tri.node_count(); ++v)
-      for (int c = 0; c < 2; ++c) g[v][c] = (1 - rigid) * weighted[v][c] + rigid * placed[v][c];
+    // The Steiner nodes' values in g are not a warm start: the system
+    // iterates from its own (warm_start).
+    if (!steiner_system.solve(u, [&](int v) -> const std::vector<double>& { return wt[v]; }, g))
+      throw VerificationError("the rigid morph's Steiner system at u = " + format_double(u) + " is singular");
     return g;
   }
 
@@ -237,11 +228,11 @@ struct GuidedMorph::State {
     return sum / double(source.edges.size());
   }
 
-  // The nodes whose trust counts with that share of rigid placement.
-  std::vector<int> judged_nodes(double rigid) const {
+  // The nodes whose trust counts with that placement.
+  std::vector<int> judged_nodes(bool rigid) const {
     std::vector<int> nodes;
     for (int v : topo.interior_nodes)
-      if (v < tri.figure_vertices || rigid > 0) nodes.push_back(v);
+      if (v < tri.figure_vertices || rigid) nodes.push_back(v);
     return nodes;
   }
 
@@ -343,7 +334,8 @@ struct GuidedMorph::State {
   }
 
   // Samples the guide at kTrustSamples + 1 times of its own timing
-  // (RigidGuide::parameter_at): the trust of every figure vertex for trust_at, and,
+  // (RigidGuide::parameter_at): the placement of step 2, the trust of every
+  // judged node for trust_at, and,
   // where some vertex does not trust the guide fully, the frame the morph
   // will actually make there (unverified: it only times the morph). If any
   // such frame exists, the morph is timed by its own motion rather than
@@ -366,10 +358,10 @@ struct GuidedMorph::State {
       sample_u[j] = guide->parameter_at(sample_time(j), Easing::None);
       if (j == 0 || j == kTrustSamples) continue;  // the inputs themselves
       blend_weights(sample_u[j]);
-      weighted[j] = guide_frame(sample_u[j], 0);
-      if (tri.steiner_vertices > 0) placed[j] = guide_frame(sample_u[j], 1);
+      weighted[j] = guide_frame(sample_u[j], false);
+      if (tri.steiner_vertices > 0) placed[j] = guide_frame(sample_u[j], true);
     }
-    auto score = [&](const std::vector<std::vector<Vec2>>& frames, double rigid) {
+    auto score = [&](const std::vector<std::vector<Vec2>>& frames, bool rigid) {
       int trusted = 0;
       double deficit = 0;
       for (int j = 1; j < kTrustSamples; ++j) {
@@ -383,22 +375,20 @@ struct GuidedMorph::State {
       }
       return std::pair<int, double>(trusted, -deficit);
     };
-    const std::pair<int, double> by_weights = score(weighted, 0);
-    const std::pair<int, double> by_placement = tri.steiner_vertices > 0 ? score(placed, 1) : by_weights;
+    const std::pair<int, double> by_weights = score(weighted, false);
+    const std::pair<int, double> by_placement = tri.steiner_vertices > 0 ? score(placed, true) : by_weights;
     // The rigid placement only where it follows the guide at every sample
     // and W(u) does not, or at two samples more: on a near tie a last-bit
     // change of the inputs (a dummy vertex placed by another fit) would
     // otherwise switch the placement, and the motion with it.
     const int all = kTrustSamples - 1;
-    rigid_share = by_placement.first > by_weights.first &&
-                          (by_placement.first == all || by_placement.first >= by_weights.first + 2)
-                      ? 1
-                      : 0;
-    stats.trusted_samples = (rigid_share > 0 ? by_placement : by_weights).first;
+    rigid_placement = by_placement.first > by_weights.first &&
+                      (by_placement.first == all || by_placement.first >= by_weights.first + 2);
+    stats.trusted_samples = (rigid_placement ? by_placement : by_weights).first;
     stats.samples = kTrustSamples - 1;
-    stats.rigid_steiner_placement = rigid_share > 0;
-    judged = judged_nodes(rigid_share);
-    const std::vector<std::vector<Vec2>>& guide_frames = rigid_share > 0 ? placed : weighted;
+    stats.rigid_steiner_placement = rigid_placement;
+    judged = judged_nodes(rigid_placement);
+    const std::vector<std::vector<Vec2>>& guide_frames = rigid_placement ? placed : weighted;
     for (int j = 1; j < kTrustSamples; ++j)
       for (int v : judged) trust_samples[j][v] = float(trust(guide_frames[j], v));
     sampled_below_one.assign(std::size_t(tri.node_count()), 0);
@@ -618,8 +608,8 @@ GuidedFrame GuidedMorph::frame(double t, int frame, bool verify, const std::stri
   // any frame.
   {
     start = Clock::now();
-    if (exact && s.rigid_share > 0) normalised = s.guided_frame(g, u, exact, true);
-    (exact && s.rigid_share == 0 ? s.steiner_system : s.full_system).refine(normalised, kRefinementRounds);
+    if (exact && s.rigid_placement) normalised = s.guided_frame(g, u, exact, true);
+    (exact && !s.rigid_placement ? s.steiner_system : s.full_system).refine(normalised, kRefinementRounds);
     std::vector<Vec2> repaired = s.similarity.apply(u, normalised);
     s.stats.solve_ms += ms_since(start);
     if (defect_of(repaired).empty() ||
