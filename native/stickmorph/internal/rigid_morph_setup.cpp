@@ -5,6 +5,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -70,6 +71,12 @@ constexpr double kRigidRefinementShare = 0.4;
 // keeps the guide from being followed and the unrefined triangulation
 // does not.
 constexpr double kLighterRefinementShares[] = {0.2, 0.1};
+// Refinement and its ladder cost a triangulation and a set-up per attempt,
+// seconds each at 10^4 vertices (the 10^4-vertex wavy line of
+// bench/blender_bake.py: 11 s to its 250 frames instead of 3.9, its
+// scrubbing families 10-50% slower) and far more at 10^5, where a bake
+// already takes most of an hour. Larger figures keep the flips and moves.
+constexpr std::size_t kMostVerticesForRefinement = 2000;
 
 GuidedMorph prepare_guided_morph(const CompatiblePair& pair, const SimilarityMotion& similarity,
                                  const std::function<std::unique_ptr<const GuideTrajectory>()>& make_guide,
@@ -106,13 +113,15 @@ GuidedMorph prepare_guided_morph(const CompatiblePair& pair, const SimilarityMot
     // smallest angle median from 1.3 to 2.3 degrees. The fallbacks keep
     // the paper's triangulation.
     triangulation_options.improvement_rounds = kRigidImprovementRounds;
-    // And compatible refinement: on the same corpora the smallest angle
+    // And compatible refinement, up to kMostVerticesForRefinement figure
+    // vertices: on the motion corpus and the letters the smallest angle
     // median rose from 2.3-2.7 to 8.2-8.7 degrees (P10 from 0.1-0.4 to
-    // 2.0-2.1) for 0.39 Steiner vertices per figure vertex at the median.
+    // 1.8-2.1) for 0.39 Steiner vertices per figure vertex at the median.
     // It needs step 2 of guided_morph.h to place Steiner vertices rigidly
     // where that follows the guide better; where neither placement follows
-    // it at every sample, the unrefined triangulation is tried too (below).
-    triangulation_options.refinement_share = kRigidRefinementShare;
+    // it at every sample, lighter refinement is tried too (below).
+    triangulation_options.refinement_share =
+        source.vertices.size() <= kMostVerticesForRefinement ? kRigidRefinementShare : 0;
     // For the fallbacks below.
     const std::vector<Vec2> unmapped_points = guide_points(false);
     // The triangulation, each attempt verified exactly by triangulate_figures:
@@ -185,8 +194,8 @@ GuidedMorph prepare_guided_morph(const CompatiblePair& pair, const SimilarityMot
     // one. Where even the unrefined one does not (the guide itself crosses
     // or folds a star, and the morph must leave it), the refined one
     // stands. Exact guide frames are the rigid motion itself and the
-    // cheapest frames (no solve). Measured on 78 letter pairs: 6 took a
-    // lighter share, 2 none (docs/MOTION.md).
+    // cheapest frames (no solve). On 78 letter pairs one kept no refinement
+    // (that 7 into an L) and a few a lighter share (docs/MOTION.md).
     if (stats.triangulation.refinement_steiner > 0 && morph->stats().trusted_samples < morph->stats().samples) {
       const bool factored = stats.similarity_factored;
       struct Attempt {
