@@ -211,6 +211,23 @@ struct GuidedMorph::State {
     return g;
   }
 
+  // The mean over the figure's edges of how much longer or shorter each is
+  // in p than in the guide frame g, over the longer of its source and
+  // target lengths (both normalised): the edge-length deviation a frame adds
+  // to the guide's own.
+  double edge_length_departure(const std::vector<Vec2>& p, const std::vector<Vec2>& g) const {
+    if (source.edges.empty()) return 0;
+    double sum = 0;
+    for (const Edge& e : source.edges) {
+      const auto length = [&](const std::vector<Vec2>& x) {
+        return std::hypot(x[e[1]][0] - x[e[0]][0], x[e[1]][1] - x[e[0]][1]);
+      };
+      const double longest = std::max(length(tri.source), length(tri.target));
+      if (longest > 0) sum += std::abs(length(p) - length(g)) / longest;
+    }
+    return sum / double(source.edges.size());
+  }
+
   // The nodes whose trust counts with that placement.
   std::vector<int> judged_nodes(bool rigid) const {
     std::vector<int> nodes;
@@ -382,6 +399,7 @@ struct GuidedMorph::State {
     figure[0].assign(tri.source.begin(), tri.source.begin() + n);
     figure[kTrustSamples] = similarity.apply(1.0, std::vector<Vec2>(tri.target.begin(), tri.target.begin() + n));
     bool leaves_guide = false;
+    double departure = 0;
     for (int j = 1; j < kTrustSamples; ++j) {
       bool exact = true;
       for (std::size_t r = 0; r < judged.size() && exact; ++r)
@@ -392,9 +410,11 @@ struct GuidedMorph::State {
         bool ignored = false;
         p = guided_frame(guide_frames[j], sample_u[j], ignored);
         leaves_guide = true;
+        departure += edge_length_departure(p, guide_frames[j]);
       }
       figure[j] = similarity.apply(sample_u[j], std::vector<Vec2>(p.begin(), p.begin() + n));
     }
+    stats.guide_departure = departure / (kTrustSamples - 1);
     own_timing.reset();
     if (!leaves_guide || !guide->retimed_by_morph()) return;
     // As RigidGuide::parameter_at: a morph that does not move beyond

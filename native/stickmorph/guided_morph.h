@@ -93,6 +93,12 @@ struct GuidedMorphStats {
   /// it.
   int trusted_samples = 0;
   int samples = 0;
+  /// Over the same samples, how far the frames the morph makes there depart
+  /// from the guide: each frame's mean over the figure's edges of the
+  /// difference of its length from the guide's, over the longer of its two
+  /// end lengths (the edge-length deviation it adds), averaged over the
+  /// samples (0 where a sample is the guide).
+  double guide_departure = 0;
   /// Step 2's placement of the guide frame's Steiner vertices: true if as
   /// rigidly as possible, false if by the blended weights W(u).
   bool rigid_steiner_placement = false;
