@@ -15,26 +15,30 @@
 //   1. the guide (RigidGuide, ARAP on the figure's edges, in output space)
 //      is mapped back by the similarity (similarity_motion.h) into the
 //      normalised morph's space, where the enclosure is fixed;
-//   2. the Steiner vertices are placed as rigidly as possible with the
-//      figure held at the guide (internal/rigid_steiner_placement.h: every
-//      triangle's source-to-target map interpolated as Alexa et al. 2000
-//      do, turning the way the guide turns its figure edges, and the
-//      Steiner vertices the least-squares fit; one factorization, a
-//      right-hand side per frame); that is the guide frame G. Issue 30:
-//      placed by the blended weights of [8], as before, they followed the
-//      barycentric morph rather than the guide, and inverted triangles
-//      beside a figure that was itself fine;
-//   3. if every interior node (figure and Steiner vertex) trusts G fully
-//      (its star there valid and not much thinner than at the ends), G is
-//      the frame: the mean value weights of every star reproduce G and are
-//      positive, so with the fixed convex enclosure G is a triangulation
-//      with the source's connectivity by Tutte's theorem (morph_topology.h);
-//   4. otherwise every interior node v takes the weights
+//   2. the Steiner vertices are placed with the figure held at the guide,
+//      one of two ways for the whole morph (chosen at construction from 15
+//      sampled guide frames: the rigid one only where the guide is trusted
+//      with it at every sample, or at two more, than with W(u)): by the
+//      blended weights W(u) of [8], or as rigidly as possible
+//      (internal/rigid_steiner_placement.h: every triangle's source-to-
+//      target map interpolated as Alexa et al. 2000 do, turning the way
+//      the guide turns its figure edges, and the Steiner vertices the
+//      least-squares fit; issue 30). That is the guide frame G;
+//   3. if every judged node trusts G fully (its star there valid and not
+//      much thinner than at the ends), G is the frame. The judged nodes are
+//      the figure's vertices, and with the rigid placement the Steiner
+//      vertices too: then the mean value weights of every interior star
+//      reproduce G and are positive; with W(u) the Steiner vertices are
+//      W(u)'s convex combinations of their neighbours by construction.
+//      Either way G solves a system with positive weights, so with the
+//      fixed convex enclosure it is a triangulation with the source's
+//      connectivity by Tutte's theorem (morph_topology.h);
+//   4. otherwise every judged node v takes the weights
 //      a_v MVC_G(v) + (1 - a_v) W(u)_v, where a_v in [0, 1] falls smoothly to
 //      0 as v's star in G approaches invalid (so that nothing pops between
-//      frames); all weights are positive and sum to 1, so the solve is
-//      valid by Tutte's theorem, and as close to the guide as the valid
-//      stars allow;
+//      frames), the other interior nodes W(u); all weights are positive and
+//      sum to 1, so the solve is valid by Tutte's theorem, and as close to
+//      the guide as the valid stars allow;
 //   5. the frame is moved by the similarity at u, and checked exactly in
 //      output space: every triangle counter-clockwise with the enclosure a
 //      convex polygon (a similarity image, no longer fixed: a triangulated
