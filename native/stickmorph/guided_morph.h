@@ -106,8 +106,8 @@ struct GuidedMorphStats {
   /// Step 2's placement of the guide frame's Steiner vertices: true if as
   /// rigidly as possible, false if by the blended weights W(u).
   bool rigid_steiner_placement = false;
-  /// Numeric LU factorizations of the blended system, set-up
-  /// included (the rest are iterations on the latest one, as MorphSolver's).
+  /// Numeric LU factorizations of the Steiner (W(u)) and the blended
+  /// systems, set-up included (the rest are iterations on the latest one, as MorphSolver's).
   int factorizations = 0;
 };
 
@@ -145,9 +145,11 @@ class GuidedMorph {
   /// time), `context` leads them. With `verify`, every frame is checked
   /// exactly as described above.
   ///
-  /// Scrubbing (issue 29): the Steiner placement of step 2 is factorized
-  /// once and exact per frame; the blended solve of step 4 keeps up to 16 factorizations
-  /// (anchors, at most 256 MiB of factors; at 10^4 vertices
+  /// Scrubbing (issue 29): the rigid Steiner placement of step 2 is
+  /// factorized once and solved directly per frame; each of the two
+  /// convex-combination systems (step 2's by W(u), step 4's blended solve)
+  /// keeps up to 16 factorizations (anchors, at most 256 MiB of factors per
+  /// system; at 10^4 vertices
   /// 1-8 MiB each) and 32 solutions, and iterates on the anchor nearest in
   /// the morph parameter from the solutions nearest to it, as MorphSolver
   /// does; it factorizes only when that iteration does not converge, and
