@@ -192,13 +192,21 @@ struct GuidedMorph::State {
       for (std::size_t j = 0; j < wt[v].size(); ++j) wt[v][j] = (1 - u) * w0[v][j] + u * w1[v][j];
   }
 
+  // Step 1: the source's nodes with the figure's vertices where the guide
+  // puts them at u, mapped back into the normalised space (where the
+  // enclosure is fixed); step 2 then places the Steiner vertices.
+  std::vector<Vec2> figure_held_at(double u) const {
+    const std::vector<Vec2> figure = similarity.unapply(u, guide->at(u));
+    std::vector<Vec2> g = tri.source;
+    std::copy(figure.begin(), figure.end(), g.begin());
+    return g;
+  }
+
   // Steps 1-2: the guide frame in normalised space, its Steiner vertices
   // placed by W(u) or (rigid) as rigidly as possible.
   std::vector<Vec2> guide_frame(double u) { return guide_frame(u, rigid_placement); }
   std::vector<Vec2> guide_frame(double u, bool rigid) {
-    const std::vector<Vec2> figure = similarity.unapply(u, guide->at(u));
-    std::vector<Vec2> g = tri.source;  // the enclosure is fixed
-    std::copy(figure.begin(), figure.end(), g.begin());
+    std::vector<Vec2> g = figure_held_at(u);
     if (rigid) {
       if (!placement.place(u, g))
         throw VerificationError("the rigid morph's Steiner placement at u = " + format_double(u) + " failed");
@@ -354,12 +362,18 @@ struct GuidedMorph::State {
     // and not when placed rigidly). One placement for the whole morph, so
     // the guide frame and the trust stay continuous in time.
     std::vector<std::vector<Vec2>> weighted(kTrustSamples + 1), placed(kTrustSamples + 1);
+    // The rigid placement is an option, never a new way to fail: where its
+    // system cannot be factorized or solved in floating point, W(u) alone.
+    bool can_place = tri.steiner_vertices > 0;
     for (int j = 0; j <= kTrustSamples; ++j) {
       sample_u[j] = guide->parameter_at(sample_time(j), Easing::None);
       if (j == 0 || j == kTrustSamples) continue;  // the inputs themselves
       blend_weights(sample_u[j]);
       weighted[j] = guide_frame(sample_u[j], false);
-      if (tri.steiner_vertices > 0) placed[j] = guide_frame(sample_u[j], true);
+      if (can_place) {
+        placed[j] = figure_held_at(sample_u[j]);
+        can_place = placement.place(sample_u[j], placed[j]);
+      }
     }
     auto score = [&](const std::vector<std::vector<Vec2>>& frames, bool rigid) {
       int trusted = 0;
@@ -376,7 +390,7 @@ struct GuidedMorph::State {
       return std::pair<int, double>(trusted, -deficit);
     };
     const std::pair<int, double> by_weights = score(weighted, false);
-    const std::pair<int, double> by_placement = tri.steiner_vertices > 0 ? score(placed, true) : by_weights;
+    const std::pair<int, double> by_placement = can_place ? score(placed, true) : by_weights;
     // The rigid placement only where it follows the guide at every sample
     // and W(u) does not, or at two samples more: on a near tie a last-bit
     // change of the inputs (a dummy vertex placed by another fit) would
