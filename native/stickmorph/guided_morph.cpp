@@ -376,11 +376,12 @@ struct GuidedMorph::State {
       }
     }
     auto score = [&](const std::vector<std::vector<Vec2>>& frames, bool rigid) {
+      const std::vector<int> nodes = judged_nodes(rigid);
       int trusted = 0;
       double deficit = 0;
       for (int j = 1; j < kTrustSamples; ++j) {
         bool all = true;
-        for (int v : judged_nodes(rigid)) {
+        for (int v : nodes) {
           const double a = trust(frames[j], v);
           deficit += 1 - a;
           all = all && a >= 1;
