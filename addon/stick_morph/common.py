@@ -50,6 +50,10 @@ PROPERTY_OPTIONS = {
     "weights": "weights",
     "enclosure_sides": "enclosure_sides",
     "show_triangulation": "steiner",
+    # Local timing (issue 31): the delay weights and the overlap, one engine
+    # option (its rule is under the keyword delay=; overlap= goes with it).
+    "delay_group": "delay",
+    "overlap": "delay",
 }
 
 
@@ -57,8 +61,10 @@ def option_applies(option: str, motion: str, option_methods: dict) -> bool:
     """Whether the engine option `option` applies to the add-on's motion
     (RIGID, BARYCENTRIC, LINEAR: the engine's method in upper case).
     option_methods: the engine's rule, native.option_methods() (the methods
-    each option of stickmorph.morph applies to); the add-on keeps no copy."""
-    return motion.lower() in option_methods[option]
+    each option of stickmorph.morph applies to); the add-on keeps no copy.
+    An option the module does not know (an older module: no delay, no
+    overlap) applies to no motion."""
+    return motion.lower() in option_methods.get(option, ())
 
 
 def property_applies(name: str, motion: str, option_methods: dict | None) -> bool:
@@ -148,3 +154,13 @@ class BakeSettings:
     # of both figures (the diagonal of their common bounding box) is not planar.
     planarity_tolerance: float = 1e-4
     set_frame_range: bool = True
+    # Local timing (issue 31, RIGID only): the name of a vertex group of the
+    # source mesh (of the first key for key poses) whose weights are the
+    # delay weights, weight 0 leading and weight 1 lagging by `overlap` of
+    # the motion ("": none, every part on the same clock). Mesh data, not a
+    # preference: a default group name would refuse every mesh without it.
+    delay_group: str = ""
+    # How far a part of weight 1 lags one of weight 0, as a fraction of the
+    # motion (the engine's overlap d in [0, 1); 0 is the plain morph). Each
+    # part moves at local time clamp((t - d w) / (1 - d), 0, 1).
+    overlap: float = 0.3

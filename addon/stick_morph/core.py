@@ -5,7 +5,8 @@ the modules that hold it, split by concept.
 - plane.py: the common plane, projection and the way back (fit_plane, ...);
 - correspondence.py: edge sets, parts, pins and the by-index-or-matched
   choice (choose_correspondence, read_pins, ...);
-- timing.py: easing and which engine frame each output frame shows;
+- timing.py: easing and which engine frame each output frame shows, local
+  timing (delay_weights, local_times);
 - messages.py: user messages for the engine's exceptions;
 - morph.py: prepare_pair, compute_morph and their results;
 - naming.py: the result object's name.
@@ -49,11 +50,12 @@ from .correspondence import (  # noqa: F401
 )
 from .timing import (  # noqa: F401
     EASINGS, RIGID_EASINGS, EASE_OVERSAMPLING, ease, engine_frame_count, ease_sample_indices, frame_list,
+    delay_weights, local_times,
 )
 from .messages import match_error_message, NESTING_DIFFERS, nesting_message, engine_error_message  # noqa: F401
 from .morph import (  # noqa: F401
     MOTIONS, ROTATIONS, Fallback, IndexReport, PreparedPair, MorphResult, prepare_pair, compute_morph, morph_pair,
-    motion_summary,
+    motion_summary, local_timing_summary,
     triangulation_world, tube_radius,
 )
 from .naming import MAX_RESULT_NAME_BYTES, RESULT_SUFFIX, result_name  # noqa: F401

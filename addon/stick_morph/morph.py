@@ -17,7 +17,8 @@ from .correspondence import (_BY_INDEX, CORRESPONDENCES, Matching, _names, check
 from .messages import engine_error_message, match_error_message
 from .native import load_engine, option_methods
 from .plane import Plane, check_planarity, fit_plane, project, unproject
-from .timing import EASINGS, RIGID_EASINGS, ease, ease_sample_indices, engine_frame_count, frame_list
+from .timing import (EASINGS, RIGID_EASINGS, ease, ease_sample_indices, engine_frame_count, frame_list,
+                     local_times)
 
 # The add-on's motion modes and rotation directions; the engine's names
 # (stickmorph.METHOD_NAMES, ROTATION_NAMES) are these in lower case.
@@ -54,6 +55,10 @@ class PreparedPair:
     # INDEX_OR_MATCH taken by index: the matching to fall back on if the
     # morph finds the pair incompatible by index (morph_pair). None otherwise.
     fallback: Fallback | None = None
+    # Local timing (issue 31): the delay weight of each of the m vertices
+    # (the source mesh's, a dummy's interpolated along its source edge, as
+    # the engine does for correspond="auto"); None without a delay group.
+    delay: np.ndarray | None = None
 
 
 @dataclass(frozen=True)
@@ -83,6 +88,11 @@ class MorphResult:
     # Wall time of the engine's call (the module's morph, which releases the
     # GIL): the bake's time is this and the Blender side (issue 29's split).
     engine_ms: float = 0.0
+    # Local timing (issue 31): the overlap the engine was given with the
+    # delay weights, None when it was given none (no delay group, or a
+    # motion it does not apply to: local_timing_ignored says so).
+    overlap: float | None = None
+    local_timing_ignored: bool = False
 
 
 def refuse_faces(name: str, faces: int) -> None:
@@ -106,13 +116,15 @@ def refuse_non_finite(name: str, world: np.ndarray) -> None:
 
 def prepare_pair(source_world, source_edges, source_faces: int, source_name: str,
                  target_world, target_edges, target_faces: int, target_name: str,
-                 settings: BakeSettings, source_groups=None, target_groups=None) -> PreparedPair:
+                 settings: BakeSettings, source_groups=None, target_groups=None, source_delay=None) -> PreparedPair:
     """Checks two meshes (world-space vertices, edges, face counts, and their
     vertex groups as {name: [vertex, ...]} for the pins), projects them onto
     their common plane (settings.plane, settings.planarity_tolerance) and
     makes the figure to morph: the source mesh itself by index, or the
     figure stickmorph.correspond matches, as settings.correspondence says
-    (choose_correspondence). Raises StickMorphError with a user message."""
+    (choose_correspondence). source_delay: the source mesh's delay weights
+    (timing.delay_weights), one per source vertex, or None; carried onto
+    the matched figure. Raises StickMorphError with a user message."""
     plane, planarity_tolerance = settings.plane, settings.planarity_tolerance
     setting = settings.correspondence
     if setting not in CORRESPONDENCES:
@@ -149,6 +161,11 @@ def prepare_pair(source_world, source_edges, source_faces: int, source_name: str
     check_pins(pins, source_edges, target_edges, len(source_world), len(target_world), source_name, target_name)
     for name, world in ((source_name, source_world), (target_name, target_world)):
         refuse_non_finite(name, world)
+    if source_delay is not None:
+        source_delay = np.asarray(source_delay, dtype=np.float64).reshape(-1)
+        if len(source_delay) != len(source_world):
+            raise StickMorphError(f"the delay weights of '{source_name}' are {len(source_delay)}, for "
+                                  f"{len(source_world)} vertices")
 
     fitted = fit_plane(source_world, target_world, plane)
     source_xy, source_h = project(source_world, fitted)
@@ -163,7 +180,7 @@ def prepare_pair(source_world, source_edges, source_faces: int, source_name: str
         count = len(source_world)
         matching = Matching(False, why, np.arange(count), np.arange(count), count, count)
         return PreparedPair(source_name, target_name, fitted, source_xy, target_xy, source_h, target_h,
-                            source_edges, size, matching)
+                            source_edges, size, matching, delay=source_delay)
 
     def matched(why, index_report=None):
         engine = load_engine()
@@ -184,7 +201,9 @@ def prepare_pair(source_world, source_edges, source_faces: int, source_name: str
             np.asarray(result["source_xy"], dtype=np.float64), np.asarray(result["target_xy"], dtype=np.float64),
             matched_heights(source_h, source_edges, source_vertex, c["source_edge"], c["source_fraction"]),
             matched_heights(target_h, target_edges, target_vertex, c["target_edge"], c["target_fraction"]),
-            np.asarray(result["edges"], dtype=np.int64).reshape(-1, 2), size, matching)
+            np.asarray(result["edges"], dtype=np.int64).reshape(-1, 2), size, matching,
+            delay=None if source_delay is None else matched_heights(
+                source_delay, source_edges, source_vertex, c["source_edge"], c["source_fraction"]))
 
     def refuse_invalid():
         # What the by-index check said of an invalid figure before the morph
@@ -284,6 +303,18 @@ def compute_morph(prepared: PreparedPair, settings: BakeSettings) -> MorphResult
                       verify=True, rotation=rotation.lower(), turns=turns, easing=RIGID_EASINGS[easing])
     applies = option_methods()
     options = {name: value for name, value in candidates.items() if option_applies(name, motion, applies)}
+    # Local timing (issue 31): the delay weights and the overlap together,
+    # where the engine's rule says they apply (Rigid); with another motion
+    # they are greyed out in the panel and not given, like Rotate.
+    overlap = None
+    if prepared.delay is not None:
+        if "delay" not in applies:  # the rule of delay= and overlap= together
+            raise StickMorphError(
+                "local timing (Delay Group) needs a newer stickmorph module: this one's morph has no delay= "
+                "or overlap=; clear Delay Group, or update the add-on")
+        if option_applies("delay", motion, applies):
+            overlap = float(settings.overlap)
+            options.update(delay=prepared.delay, overlap=overlap)
     started = time.perf_counter()
     try:
         result = engine.morph(prepared.source_xy, prepared.target_xy, prepared.edges, frames=m,
@@ -301,15 +332,19 @@ def compute_morph(prepared: PreparedPair, settings: BakeSettings) -> MorphResult
         times = ease(np.asarray(result["times"]), easing)
     else:
         times = np.asarray(result["times"])[indices]
-    heights = ((1.0 - times)[:, None] * prepared.source_h[None, :]
-               + times[:, None] * prepared.target_h[None, :])
+    # Each vertex's height moves on its own clock, as the engine moves it in
+    # the plane (timing.local_times; without local timing every vertex's
+    # clock is the frame's time).
+    s = local_times(times, prepared.delay if overlap is not None else None, overlap or 0.0)
+    heights = (1.0 - s) * prepared.source_h[None, :] + s * prepared.target_h[None, :]
     frames_world = unproject(frames_xy, heights, prepared.plane)
     stats = result["stats"]
     invalid = []
     if motion == "LINEAR":
         bad = set(int(k) for k in stats.get("invalid_frames", ()))
         invalid = [k for k, index in enumerate(indices.tolist()) if index in bad]
-    return MorphResult(frames_world, result["triangulation"], stats, motion, invalid, engine_ms)
+    return MorphResult(frames_world, result["triangulation"], stats, motion, invalid, engine_ms, overlap,
+                       prepared.delay is not None and overlap is None)
 
 
 def motion_summary(morph: MorphResult, frame_start: int = 1) -> tuple[str, str]:
@@ -338,6 +373,17 @@ def motion_summary(morph: MorphResult, frame_start: int = 1) -> tuple[str, str]:
         return (f"Linear: {len(frames)} invalid",
                 f"linear: {len(frames)} of {count} frames cross or fold the figure (frames {frame_list(frames)})")
     return "Barycentric", "barycentric"
+
+
+def local_timing_summary(morph: MorphResult, group: str) -> str:
+    """For the bake's report: what local timing did (issue 31), or "" when
+    no delay group was named."""
+    if morph.overlap is not None:
+        return f"local timing: the delay group '{group}' lags by {morph.overlap:.3g} of the motion"
+    if morph.local_timing_ignored:
+        return (f"local timing off: the delay group '{group}' applies to the Rigid motion only "
+                f"(Motion is {morph.motion.title()})")
+    return ""
 
 
 def triangulation_world(triangulation: dict, prepared: PreparedPair) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -18,7 +18,10 @@ Heights: each key keeps its vertices' distances h_k from the common plane
 a pair). A frame f of the segment from key a (frame f_a) to key b (f_b) has
 the height (1 - s) h_a + s h_b, s = (f - f_a) / (f_b - f_a) (eased as the
 segment is, with Easing): the keys are exact, and keys drawn in one plane
-stay in it.
+stay in it. With local timing (issue 31: delay weights from a vertex group of
+the first key, and the overlap) each vertex's s is its own local time in the
+segment (timing.local_times), as the engine runs the delay on each segment's
+own clock.
 """
 
 from __future__ import annotations
@@ -33,7 +36,7 @@ from .correspondence import CORRESPONDENCES, _names, check_pins, compare_edge_se
 from .morph import ROTATIONS, refuse_faces, refuse_non_finite
 from .native import load_engine
 from .plane import Plane, check_planarity, fit_plane_of, project, unproject
-from .timing import RIGID_EASINGS, ease
+from .timing import RIGID_EASINGS, ease, local_times
 
 # An object's key frame (its Object property stick_morph_key_frame): 0 means
 # automatic, evenly spaced from the start frame.
@@ -188,6 +191,11 @@ def supports_easing(engine=None) -> bool:
     return _takes("easing", engine)
 
 
+def supports_local_timing(engine=None) -> bool:
+    """Whether the module's morph_key_poses takes delay= and overlap= (issue 31)."""
+    return _takes("delay", engine) and _takes("overlap", engine)
+
+
 @dataclass
 class PreparedKeys:
     """K keys ready for the engine, in their common plane."""
@@ -202,6 +210,9 @@ class PreparedKeys:
     why: str  # why by index or matched, for the report
     pins: list = field(default_factory=list)  # K - 1 tuples of Pin (key k with key k + 1)
     setting: str = "INDEX_OR_MATCH"
+    # Local timing (issue 31): the delay weight of each vertex of key 1 (the
+    # engine carries them onto a matched common figure), or None.
+    delay: np.ndarray | None = None
 
 
 def _not_supported(names, why: str) -> StickMorphError:
@@ -231,12 +242,13 @@ def refuse_unsupported_options(settings: BakeSettings) -> None:
                               f"(choose one of {', '.join(CORRESPONDENCES)})")
 
 
-def prepare_keys(worlds, edges, faces, names, settings: BakeSettings, groups=None) -> PreparedKeys:
+def prepare_keys(worlds, edges, faces, names, settings: BakeSettings, groups=None, delay=None) -> PreparedKeys:
     """Checks K keys (world-space vertices, edges, face counts, vertex groups
     {name: [vertex, ...]} for the pins) and projects them onto their common
     plane. By index when settings.correspondence is INDEX, or Automatic and
     every key has the first key's vertex count and edges and there are no
-    pins; matched otherwise. Raises StickMorphError naming the key."""
+    pins; matched otherwise. delay: the delay weights of key 1's vertices
+    (timing.delay_weights) or None. Raises StickMorphError naming the key."""
     names = list(names)
     count = len(names)
     if count < 2:
@@ -293,6 +305,15 @@ def prepare_keys(worlds, edges, faces, names, settings: BakeSettings, groups=Non
         matched, why = False, "the same vertices and edges"
     if matched and not supports_matching():
         raise _not_supported(names, why)
+    if delay is not None:
+        delay = np.asarray(delay, dtype=np.float64).reshape(-1)
+        if len(delay) != len(worlds[0]):
+            raise StickMorphError(f"the delay weights of {key_label(names, 0)} are {len(delay)}, for "
+                                  f"{len(worlds[0])} vertices")
+        if not supports_local_timing():
+            raise StickMorphError(
+                "local timing (Delay Group) needs a newer stickmorph module: this one's morph_key_poses has no "
+                "delay= or overlap=; clear Delay Group, or update the add-on")
 
     fitted = fit_plane_of(worlds, settings.plane)
     projected = [project(world, fitted) for world in worlds]
@@ -301,7 +322,7 @@ def prepare_keys(worlds, edges, faces, names, settings: BakeSettings, groups=Non
     check_planarity([(name, h) for name, (_, h) in zip(names, projected)], size, settings.planarity_tolerance,
                     fitted, settings.plane)
     return PreparedKeys(names, fitted, [xy for xy, _ in projected], [h for _, h in projected], edges, size,
-                        matched, why, pins, setting)
+                        matched, why, pins, setting, delay)
 
 
 # -------------------------------------------------------------- morph ----
@@ -315,6 +336,7 @@ class SequenceResult:
     matched: bool
     why: str
     places: list | None = None  # matched: the engine's "places", one dict per key
+    overlap: float | None = None  # local timing's overlap (issue 31), None without a delay group
 
 
 def key_error_message(error: Exception, names) -> str:
@@ -336,15 +358,17 @@ def key_error_message(error: Exception, names) -> str:
     return f"stickmorph: {text}"
 
 
-def _frame_heights(heights, segments, frame_count: int, easing: str = "NONE") -> np.ndarray:
+def _frame_heights(heights, segments, frame_count: int, easing: str = "NONE", delay=None,
+                   overlap: float = 0.0) -> np.ndarray:
     """(N, m) heights: each segment's keys' heights, blended by frame (eased
-    as the segments are: timing.ease)."""
+    as the segments are: timing.ease), each vertex on its own clock in the
+    segment with delay weights (m,) (timing.local_times)."""
     out = np.empty((frame_count, len(heights[0])))
     for segment in segments:
         first, last = int(segment["first_frame"]), int(segment["last_frame"])
         a, b = heights[int(segment["from_key"])], heights[int(segment["to_key"])]
-        s = ease((np.arange(first, last + 1) - first) / max(last - first, 1), easing)
-        out[first:last + 1] = (1.0 - s)[:, None] * a[None, :] + s[:, None] * b[None, :]
+        s = local_times(ease((np.arange(first, last + 1) - first) / max(last - first, 1), easing), delay, overlap)
+        out[first:last + 1] = (1.0 - s) * a[None, :] + s * b[None, :]
     return out
 
 
@@ -360,6 +384,8 @@ def morph_keys(prepared: PreparedKeys, settings: BakeSettings, frame_count: int,
                    weights=settings.weights, enclosure_sides=int(settings.enclosure_sides), verify=True)
     if settings.easing != "NONE":  # every segment eased (a module without easing= was refused)
         options["easing"] = RIGID_EASINGS[settings.easing]
+    if prepared.delay is not None:  # key 1's weights (a module without delay= was refused)
+        options.update(delay=prepared.delay, overlap=float(settings.overlap))
 
     def run(matched):
         if matched:
@@ -386,16 +412,22 @@ def morph_keys(prepared: PreparedKeys, settings: BakeSettings, frame_count: int,
     except (engine.StickMorphError, engine.InternalError) as e:
         raise StickMorphError(key_error_message(e, prepared.names)) from e
     places = result.get("places") if matched else None
+    delay = prepared.delay
     if matched:
         heights = [matched_heights(prepared.heights[k], prepared.edges[k], place["vertex"], place["edge"],
                                    place["fraction"]) for k, place in enumerate(places)]
+        if delay is not None:  # onto the common figure, as the engine carries them
+            first = places[0]
+            delay = matched_heights(delay, prepared.edges[0], first["vertex"], first["edge"], first["fraction"])
     else:
         heights = prepared.heights
     frames_xy = np.asarray(result["frames"], dtype=np.float64)
-    frame_heights = _frame_heights(heights, result["segments"], len(frames_xy), settings.easing)
+    frame_heights = _frame_heights(heights, result["segments"], len(frames_xy), settings.easing, delay,
+                                   float(settings.overlap))
     return SequenceResult(unproject(frames_xy, frame_heights, prepared.plane),
                           np.asarray(result["edges"], dtype=np.int64).reshape(-1, 2), list(result["keys_at"]),
-                          list(result["segments"]), matched, why, places)
+                          list(result["segments"]), matched, why, places,
+                          None if prepared.delay is None else float(settings.overlap))
 
 
 def segment_summary(result: SequenceResult, names, frame_start: int) -> list[str]:
