@@ -32,6 +32,12 @@ and measures each run:
              skips that
   exact      frames[0] equal to the source's vertices and the last frame to the target's, bit
              for bit; d = 0 frames and times equal to the plain run's, bit for bit
+  reference  for each d > 0 also the delayed motion as issue 31 states it, built here from the
+             plain run's frames (reference_delayed: every edge's direction and length those of the
+             plain morph at the edge's local time, the vertices fitted to them): its lag (d, up
+             to the frames' resolution) and its invalid frames (the same exact check). Where the
+             engine's lag falls short of d and the reference is valid at every frame, the engine
+             gave way where the figure itself did not need it to.
 
 It prints one row per pair and a summary per overlap (median and extreme |lag - d|, pairs within
 0.1, bad frames, exactness), and writes everything to --json (the local_timing.json that
@@ -129,6 +135,44 @@ def progress_curves(frames, edges, limb_edges, min_turn=MIN_TURN_DEG):
             "other": np.median(share[:, rest], axis=1).round(4).tolist() if rest else None}
 
 
+def local_times(times, weights, overlap):
+    """Issue 31's local time clamp((t - d w) / (1 - d), 0, 1), per time (rows) and vertex."""
+    t = np.asarray(times, dtype=float)[:, None]
+    w = np.asarray(weights, dtype=float)[None, :]
+    return np.clip((t - overlap * w) / (1.0 - overlap), 0.0, 1.0)
+
+
+def reference_delayed(plain_frames, plain_times, edges, weights, overlap):
+    """The delayed motion as issue 31 states it, built here from the plain morph's frames: at
+    every time of the plain run each edge has the direction and length the plain morph gives it
+    at the edge's local time (the mean of its ends' local times; angles unwrapped, both
+    interpolated linearly between the plain frames), and the vertices are the least-squares fit
+    to those edge vectors with the plain frame's centroid. Not the engine's motion: the motion it
+    would follow if nothing were in the way; its frames are checked like the engine's, so that a
+    lag short of d can be told apart from a delayed motion that is itself invalid."""
+    plain_frames = np.asarray(plain_frames, dtype=float)
+    times = np.asarray(plain_times, dtype=float)
+    e = np.asarray(edges, dtype=int).reshape(-1, 2)
+    vec = plain_frames[:, e[:, 1]] - plain_frames[:, e[:, 0]]
+    angle = np.unwrap(np.arctan2(vec[..., 1], vec[..., 0]), axis=0)
+    length = np.linalg.norm(vec, axis=2)
+    tau_v = local_times(times, weights, overlap)
+    tau_e = (tau_v[:, e[:, 0]] + tau_v[:, e[:, 1]]) / 2
+    n, count = plain_frames.shape[1], len(e)
+    incidence = np.zeros((count + 1, n))
+    incidence[np.arange(count), e[:, 1]] = 1.0
+    incidence[np.arange(count), e[:, 0]] = -1.0
+    incidence[count, :] = 1.0 / n  # the centroid
+    solve = np.linalg.pinv(incidence)
+    out = np.empty_like(plain_frames)
+    for f in range(len(times)):
+        a = np.array([np.interp(tau_e[f, k], times, angle[:, k]) for k in range(count)])
+        r = np.array([np.interp(tau_e[f, k], times, length[:, k]) for k in range(count)])
+        rhs = np.vstack([np.stack([r * np.cos(a), r * np.sin(a)], axis=1), plain_frames[f].mean(axis=0)])
+        out[f] = solve @ rhs
+    return out
+
+
 # ---------------------------------------------------------------------------
 # running the CLI
 
@@ -224,6 +268,13 @@ def measure_pair(cli, corpus, entry, overlaps, frame_count, exact_check, keep_st
         row = measure_run(*run, src, tgt, edges, limb_edges, topology)
         if row["lag"] is not None:
             row["lag_error"] = row["lag"] - d
+        if plain is not None and d > 0.0:
+            weights = np.zeros(len(src))
+            weights[list(entry["limb_vertices"])] = 1.0
+            reference = reference_delayed(plain[0], plain[1], edges, weights, d)
+            row["reference_lag"] = lag(reference, plain[1], edges, limb_edges)["lag"]
+            if topology is not None:
+                row["reference_bad_frames"], _ = check_frames(topology, reference)
         if plain is not None:
             row["same_as_plain"] = bool(np.array_equal(run[0], plain[0]) and np.array_equal(run[1], plain[1]))
         pair["runs"][label] = row
@@ -264,8 +315,10 @@ def summarize(pairs, overlaps):
              "pairs_with_bad_frames": sum(1 for _, r in done if r.get("bad_frames")),
              "frames_checked": sum(1 for _, r in done if "bad_frames" in r),
              "first_last_exact": sum(1 for _, r in done if r["first_exact"] and r["last_exact"]),
-             "misses": [{"name": p["name"], "lag": r["lag"], "limb": p.get("limb")} for p, r in done
-                        if r.get("lag") is not None and abs(r["lag"] - d) > TOLERANCE]}
+             "misses": [{"name": p["name"], "lag": r["lag"], "limb": p.get("limb"),
+                         "reference_lag": r.get("reference_lag"),
+                         "reference_valid": (not r["reference_bad_frames"]) if "reference_bad_frames" in r else None}
+                        for p, r in done if r.get("lag") is not None and abs(r["lag"] - d) > TOLERANCE]}
         if label != "plain":
             s["same_as_plain"] = sum(1 for _, r in done if r.get("same_as_plain"))
             s["compared_with_plain"] = sum(1 for _, r in done if "same_as_plain" in r)
@@ -273,6 +326,13 @@ def summarize(pairs, overlaps):
                      and p["delayed_clear"].get(label, True)]
             s["clear_pairs"] = len(clear)
             s["clear_within"] = sum(1 for e in clear if e <= TOLERANCE)
+        if label not in ("plain", "0"):
+            reference = [r["reference_lag"] for _, r in done if r.get("reference_lag") is not None]
+            s["reference_measured"] = len(reference)
+            s["reference_lag_median"] = percentile(reference, 50)
+            s["reference_within"] = sum(1 for x in reference if abs(x - d) <= TOLERANCE)
+            s["reference_bad_frames"] = sum(len(r.get("reference_bad_frames", [])) for _, r in done)
+            s["reference_pairs_with_bad_frames"] = sum(1 for _, r in done if r.get("reference_bad_frames"))
         out[label] = s
     return out
 
@@ -313,9 +373,15 @@ def print_report(pairs, summary, overlaps, stream=sys.stdout):
         if label != "plain":
             line += (f"; same as plain {s['same_as_plain']}/{s['compared_with_plain']}; delayed path clear: "
                      f"within {s['clear_within']}/{s['clear_pairs']}")
+        if "reference_measured" in s:
+            line += (f"; reference (issue 31's delayed motion from the plain frames): lag median "
+                     f"{fmt(s['reference_lag_median'])}, within {s['reference_within']}/{s['reference_measured']}, "
+                     f"invalid frames {s['reference_bad_frames']} (in {s['reference_pairs_with_bad_frames']} pairs)")
         print(line, file=stream)
         for m in s["misses"] if label not in ("plain", "0") else []:
-            print(f"    misses: {m['name']} (limb {m['limb']}): lag {m['lag']:.3f}", file=stream)
+            valid = {True: "valid", False: "INVALID", None: "not checked"}[m["reference_valid"]]
+            print(f"    misses: {m['name']} (limb {m['limb']}): lag {m['lag']:.3f}; the reference: lag "
+                  f"{fmt(m['reference_lag'])}, {valid}", file=stream)
         for f in s["failures"]:
             print(f"    failed: {f}", file=stream)
 

@@ -14,6 +14,8 @@ Input (written by bench/benchmarks.sh under out/benchmarks/):
                       the stateful solvers (issue 15; optional, likewise)
   blender.json        bench/blender_bake.py --json: the bake and playback in
                       headless Blender (issue 29; optional, likewise)
+  local_timing.json   bench/local_timing.py --json: the measured lag of a delayed
+                      limb against the overlap asked (issue 31; optional, likewise)
 
 Output: BENCHMARKS.md and docs/benchmarks/*.svg. Every number in them comes
 from the input files; the text around them only explains. Runs with Debian's
@@ -34,10 +36,18 @@ from benchmarks_md.common import (STAGES, Cell, InputError, fit_exponent, index_
                                   read_inputs, read_scrub)
 from benchmarks_md.correspondence import (correspondence_requirement, correspondence_section,  # noqa: E402,F401
                                           read_correspondence)
+from benchmarks_md.local_timing import local_timing_section, read_local_timing  # noqa: E402,F401
 from benchmarks_md.motion import motion_section, read_motion  # noqa: E402,F401
 from benchmarks_md.sequences import read_sequences, sequences_headline, sequences_section  # noqa: E402,F401
 from benchmarks_md.speed import frame_cost_section, scrub_section, speed_headline, total_exponent  # noqa: E402,F401
 from benchmarks_md.writer import write_report  # noqa: E402
+
+
+def append_sections(out_path, md):
+    """Sections written after write_report's, at the end of the report (issue 31's local
+    timing)."""
+    with open(out_path, "a", encoding="utf-8") as f:
+        f.write("\n".join(md).rstrip() + "\n")
 
 
 def main():
@@ -55,8 +65,10 @@ def main():
         scrub = read_scrub(args.data)
         sequences = read_sequences(args.data)
         blender = read_blender(args.data)
+        local_timing = read_local_timing(args.data)
         write_report(records, polygon_pairs, run, args.output, args.plots, motion, correspondence, scrub,
                      sequences, blender)
+        append_sections(args.output, local_timing_section(local_timing, args.output, args.plots))
     except (InputError, KeyError) as error:
         print(f"error: make_benchmarks: incomplete benchmark data: {error}", file=sys.stderr)
         return 2

@@ -11,4 +11,6 @@ is the command; bench/README.md lists the modules):
   motion.py          motion quality (issue 12) from motion.json
   correspondence.py  correspondence against size (issue 13) from correspondence.json
   sequences.py       key poses (issue 28) from sequences.json: smoothness at the keys, filmstrip
+  local_timing.py    local timing (issue 31) from local_timing.json: the measured lag of a delayed
+                     limb against the overlap asked, filmstrips (make_benchmarks.py appends it)
 """
