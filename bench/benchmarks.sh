@@ -34,6 +34,13 @@
 #   sequences.json      bench/sequence_motion.py on it (issue 28): the sequence
 #                       morph against chained pair morphs and straight-line
 #                       (shape-key) blending, and keys drawn separately
+#   local_timing_corpus/ bench/local_timing_corpus.py --seed 31: skeleton pairs where
+#                       the body bends while one limb turns about its junction
+#   local_timing.json   bench/local_timing.py on it (issue 31): the lag of the limb
+#                       delayed by `--timing` against the overlap asked (0.3, 0.5),
+#                       validity, exact ends, d = 0 against the plain morph; skipped,
+#                       and the report says so, when `stickmorph morph --help` lists
+#                       no --timing
 #   blender.json        bench/blender_bake.py (issue 29): the bake and playback
 #                       in headless Blender at 10^3, 10^4 and 10^5 vertices,
 #                       with the add-on package built from the measured commit
@@ -60,10 +67,12 @@ scrub_large_frames=24
 # 60 frames per second are asked of any 10^4-vertex figure.
 scrub_families=polyline,spiral,polygon,tree,triangulation,thinned,rings
 blender_sizes=1000,10000,100000
+local_timing_count=36
 working_tree=0
 for argument in "$@"; do
   case "$argument" in
-    --quick) sizes=10,30,100,300; scrub_sizes=1000; scrub_frames=60; scrub_large= ; blender_sizes=1000 ;;
+    --quick) sizes=10,30,100,300; scrub_sizes=1000; scrub_frames=60; scrub_large= ; blender_sizes=1000
+             local_timing_count=10 ;;
     --working-tree) working_tree=1 ;;
     *) echo "usage: bash bench/benchmarks.sh [--quick] [--working-tree]" >&2; exit 2 ;;
   esac
@@ -120,7 +129,8 @@ cmake --build "$build" -j2 --target stickmorph_benchmark stickmorph_benchmark_mo
 
 mkdir -p "$data"
 rm -rf "$data/polygon_pairs.json" "$data/morph.jsonl" "$data/correspondence.json" "$data/motion.json" \
-  "$data/scrub.jsonl" "$data/scrub_large.jsonl" "$data/run.json" "$data/sequences.json" "$data/key_pose_corpus" "$data/blender.json"
+  "$data/scrub.jsonl" "$data/scrub_large.jsonl" "$data/run.json" "$data/sequences.json" "$data/key_pose_corpus" "$data/blender.json" \
+  "$data/local_timing.json" "$data/local_timing_corpus"
 
 echo "==== polygon-pair corpus (tests/data/polygon_pairs) ===="
 "$build/stickmorph_benchmark" --json "$data/polygon_pairs.json" "$source_dir/tests/data/polygon_pairs" \
@@ -178,6 +188,20 @@ tail -1 "$data/key_pose_corpus.log"
 /usr/bin/python3 bench/sequence_motion.py "$data/key_pose_corpus" --build-dir "$build" \
   --json "$data/sequences.json" > "$data/sequences.md"
 sed -n '/^medians/,$p' "$data/sequences.md"
+
+# morph_help: `stickmorph morph --help`, read for the motion step above.
+if [[ "$morph_help" == *--timing* ]]; then
+  echo "==== local timing (issue 31: bench/local_timing_corpus.py, bench/local_timing.py) ===="
+  /usr/bin/python3 bench/local_timing_corpus.py "$data/local_timing_corpus" --seed 31 --count "$local_timing_count" \
+    --build-dir "$build" > "$data/local_timing_corpus.log"
+  tail -1 "$data/local_timing_corpus.log"
+  /usr/bin/python3 bench/local_timing.py "$data/local_timing_corpus" --build-dir "$build" --overlaps 0.3,0.5 \
+    --json "$data/local_timing.json" > "$data/local_timing.md" 2> "$data/local_timing.log" \
+    || { tail -20 "$data/local_timing.log" >&2; exit 1; }
+  sed -n '/^plain (no --timing)/,$p' "$data/local_timing.md"
+else
+  echo "==== local timing: not measured (\`stickmorph morph --help\` lists no --timing) ===="
+fi
 
 if command -v "${BLENDER:-blender}" >/dev/null; then
   echo "==== Blender (issue 29: bench/blender_bake.py, sizes $blender_sizes; progress below) ===="
