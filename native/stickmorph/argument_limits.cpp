@@ -23,6 +23,9 @@ const std::vector<OptionName>& option_names() {
       {Option::Correspond, "--correspond", "correspond"},
       {Option::Pins, "--pin", "pins"},
       {Option::FrameCheck, "--frame-check", "frame_check"},
+      // Local timing (issue 31): the CLI reads weights and overlap from one
+      // file; the keywords are delay= and overlap=, named by the first.
+      {Option::Timing, "--timing", "delay"},
   };
   return table;
 }

@@ -55,6 +55,7 @@ enum class Option {
   Correspond,
   Pins,
   FrameCheck,
+  Timing,  ///< per-vertex delay weights and an overlap (local_timing.h)
 };
 
 /// Which interface's names messages use: the CLI's "--enclosure-sides" or

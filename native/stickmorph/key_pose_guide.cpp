@@ -72,6 +72,11 @@ struct KeyPoseGuide::State {
   std::vector<std::vector<double>> value;     // per knot: the channels below
   std::vector<std::vector<double>> tangent;   // per knot: d(channel)/dt there
   std::optional<internal::EdgeVectorFit> fit;
+  /// The figure on `segment` with edge e at segment parameter edge_u(e)
+  /// and every part's centroid at part_u (the Hermite channels and the
+  /// log-lengths' blends, then the least-squares fit).
+  template <class EdgeParameter>
+  std::vector<Vec2> positions(int segment, const EdgeParameter& edge_u, double part_u) const;
   // Channels: edge angles [0, m), edge log-lengths [m, 2m), part centroids
   // x [2m, 2m + P) and y [2m + P, 2m + 2P).
 };
@@ -167,6 +172,8 @@ KeyPoseGuide::KeyPoseGuide(KeyPoseGuide&&) noexcept = default;
 KeyPoseGuide& KeyPoseGuide::operator=(KeyPoseGuide&&) noexcept = default;
 
 const std::vector<double>& KeyPoseGuide::knot_times() const { return state_->knots; }
+const std::vector<int>& KeyPoseGuide::part() const { return state_->fit->part(); }
+int KeyPoseGuide::part_count() const { return state_->fit->part_count(); }
 
 int KeyPoseGuide::segment_at(double t) const {
   const std::vector<double>& knots = state_->knots;
@@ -181,14 +188,36 @@ std::vector<Vec2> KeyPoseGuide::at(double t) const {
   const int segment = segment_at(t);
   const double t0 = s.knots[std::size_t(segment)], width = s.knots[std::size_t(segment) + 1] - t0;
   const double u = (t - t0) / width;
+  return s.positions(segment, [u](std::size_t) { return u; }, u);
+}
+
+std::vector<Vec2> KeyPoseGuide::in_segment(int segment, const std::vector<double>& edge_u, double u) const {
+  const State& s = *state_;
+  if (segment < 0 || std::size_t(segment) + 1 >= s.knots.size())
+    throw InvalidArgumentError("segment " + std::to_string(segment) + " is outside 0.." +
+                               std::to_string(s.knots.size() - 2));
+  if (edge_u.size() != std::size_t(s.edge_count))
+    throw InvalidArgumentError("a parameter per edge: " + std::to_string(s.edge_count) + " edges, " +
+                               std::to_string(edge_u.size()) + " parameters");
+  for (double x : edge_u)
+    if (!(x >= 0 && x <= 1)) throw InvalidArgumentError("an edge's segment parameter must be in [0, 1]");
+  if (!(u >= 0 && u <= 1)) throw InvalidArgumentError("the segment parameter must be in [0, 1]");
+  return s.positions(segment, [&edge_u](std::size_t e) { return edge_u[e]; }, u);
+}
+
+template <class EdgeParameter>
+std::vector<Vec2> KeyPoseGuide::State::positions(int segment, const EdgeParameter& edge_u, double part_u) const {
+  const double t0 = knots[std::size_t(segment)], width = knots[std::size_t(segment) + 1] - t0;
+  const std::vector<double>& y0 = value[std::size_t(segment)];
+  const std::vector<double>& y1 = value[std::size_t(segment) + 1];
+  const std::vector<double>& m0 = tangent[std::size_t(segment)];
+  const std::vector<double>& m1 = tangent[std::size_t(segment) + 1];
   // Cubic Hermite basis: exactly the knot's values at u = 0 and u = 1.
-  const double u2 = u * u, u3 = u2 * u;
-  const double h00 = 2 * u3 - 3 * u2 + 1, h10 = u3 - 2 * u2 + u, h01 = -2 * u3 + 3 * u2, h11 = u3 - u2;
-  const std::vector<double>& y0 = s.value[std::size_t(segment)];
-  const std::vector<double>& y1 = s.value[std::size_t(segment) + 1];
-  const std::vector<double>& m0 = s.tangent[std::size_t(segment)];
-  const std::vector<double>& m1 = s.tangent[std::size_t(segment) + 1];
-  auto channel = [&](std::size_t c) { return h00 * y0[c] + h10 * width * m0[c] + h01 * y1[c] + h11 * width * m1[c]; };
+  auto channel = [&](std::size_t c, double u) {
+    const double u2 = u * u, u3 = u2 * u;
+    const double h00 = 2 * u3 - 3 * u2 + 1, h10 = u3 - 2 * u2 + u, h01 = -2 * u3 + 3 * u2, h11 = u3 - u2;
+    return h00 * y0[c] + h10 * width * m0[c] + h01 * y1[c] + h11 * width * m1[c];
+  };
   // The log-lengths: the straight line of the segment, turned into the
   // knots' tangents only within kLengthBlend of either end (blend_in and
   // blend_out: value 0 and slope 1 at their knot, value and slope 0 from
@@ -197,25 +226,27 @@ std::vector<Vec2> KeyPoseGuide::at(double t) const {
   // over most of the segment, as the pair morph's does (its rigidity
   // target, issue 28): a Hermite curve bends the whole segment, 4 times as
   // far from the line on average.
-  const double in = u < kLengthBlend ? u * (1 - u / kLengthBlend) * (1 - u / kLengthBlend) : 0.0;
-  const double v = 1 - u;
-  const double out = v < kLengthBlend ? -v * (1 - v / kLengthBlend) * (1 - v / kLengthBlend) : 0.0;
-  auto log_length = [&](std::size_t c) {
+  auto log_length = [&](std::size_t c, double u) {
     if (u <= 0) return y0[c];  // the knots' own values, not rounded through the line
     if (u >= 1) return y1[c];
+    const double in = u < kLengthBlend ? u * (1 - u / kLengthBlend) * (1 - u / kLengthBlend) : 0.0;
+    const double v = 1 - u;
+    const double out = v < kLengthBlend ? -v * (1 - v / kLengthBlend) * (1 - v / kLengthBlend) : 0.0;
     const double slope = (y1[c] - y0[c]) / width;
     return y0[c] + slope * width * u + width * ((m0[c] - slope) * in + (m1[c] - slope) * out);
   };
-  const std::size_t m = std::size_t(s.edge_count);
+  const std::size_t m = std::size_t(edge_count);
   std::vector<Vec2> edge_vectors(m);
   for (std::size_t e = 0; e < m; ++e) {
-    const double angle = channel(e), length = std::exp(log_length(m + e));
+    const double u = edge_u(e);
+    const double angle = channel(e, u), length = std::exp(log_length(m + e, u));
     edge_vectors[e] = {length * std::cos(angle), length * std::sin(angle)};
   }
-  const std::size_t parts = std::size_t(s.fit->part_count());
+  const std::size_t parts = std::size_t(fit->part_count());
   std::vector<Vec2> centroids(parts);
-  for (std::size_t p = 0; p < parts; ++p) centroids[p] = {channel(2 * m + p), channel(2 * m + parts + p)};
-  return s.fit->positions(edge_vectors, centroids);
+  for (std::size_t p = 0; p < parts; ++p)
+    centroids[p] = {channel(2 * m + p, part_u), channel(2 * m + parts + p, part_u)};
+  return fit->positions(edge_vectors, centroids);
 }
 
 }  // namespace stickmorph

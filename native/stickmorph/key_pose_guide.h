@@ -84,12 +84,26 @@ class KeyPoseGuide {
   /// @throws InvalidArgumentError for t outside [0, 1].
   std::vector<Vec2> at(double t) const;
 
+  /// The figure on segment `segment` (0-based) with edge e at parameter
+  /// edge_u[e] of the segment (0 its first key, 1 its last; as at(t) maps
+  /// the segment's times) and every part's centroid at `u`: what local
+  /// timing (local_timing.h) asks of the sequence's guide. With every
+  /// edge_u[e] equal to u, at() of the time at u.
+  /// @throws InvalidArgumentError for a segment or a parameter out of range,
+  ///         or not one parameter per edge.
+  std::vector<Vec2> in_segment(int segment, const std::vector<double>& edge_u, double u) const;
+
   /// The segment that time t lies in: s for t in [time s, time s + 1), the
   /// last segment at t = 1.
   int segment_at(double t) const;
 
   /// The knot times: the K key times, then 1 with `loop` (the first key again).
   const std::vector<double>& knot_times() const;
+
+  /// The connected part of every vertex (#V), numbered as the guide's fit
+  /// numbers them, and their count.
+  const std::vector<int>& part() const;
+  int part_count() const;
 
  private:
   struct State;

@@ -17,6 +17,7 @@
 #include "stickmorph/guided_morph.h"
 #include "stickmorph/internal/rigid_morph_setup.h"
 #include "stickmorph/key_pose_guide.h"
+#include "stickmorph/local_timing.h"
 #include "stickmorph/morph_options.h"
 #include "stickmorph/rigid_guide.h"
 #include "stickmorph/working_scale.h"
@@ -28,15 +29,23 @@ std::string key_name(std::size_t k) { return "key " + std::to_string(k + 1); }
 
 // One segment's stretch [t0, t1] of the sequence's guide, as the trajectory
 // its GuidedMorph follows: morph parameter u is the segment's own time, and
-// the morph does not retime it (key_pose_morph.h).
+// the morph does not retime it (key_pose_morph.h). With a local clock
+// (local timing, issue 31) every edge runs at its local time of u within
+// the segment, so that every key stays exact at its frame.
 class KeyPoseStretch : public GuideTrajectory {
  public:
-  KeyPoseStretch(std::shared_ptr<const KeyPoseGuide> guide, double t0, double t1)
-      : guide_(std::move(guide)), t0_(t0), t1_(t1) {}
+  KeyPoseStretch(std::shared_ptr<const KeyPoseGuide> guide, int segment, double t0, double t1,
+                 std::shared_ptr<const LocalClock> clock)
+      : guide_(std::move(guide)), segment_(segment), t0_(t0), t1_(t1), clock_(std::move(clock)) {}
   std::vector<Vec2> at(double u) const override {
     // The knots themselves at the ends, not t0 + (t1 - t0), which may round.
     if (u <= 0) return guide_->at(t0_);
     if (u >= 1) return guide_->at(t1_);
+    if (clock_) {
+      std::vector<Vec2> positions = guide_->in_segment(segment_, clock_->edge_times(u), u);
+      clock_->place_parts(u, positions);
+      return positions;
+    }
     return guide_->at(t0_ + u * (t1_ - t0_));
   }
   double parameter_at(double t, Easing) const override { return t; }
@@ -44,7 +53,9 @@ class KeyPoseStretch : public GuideTrajectory {
 
  private:
   std::shared_ptr<const KeyPoseGuide> guide_;
+  int segment_;
   double t0_, t1_;
+  std::shared_ptr<const LocalClock> clock_;
 };
 
 void check_same_graph(const std::vector<StickFigure>& keys) {
@@ -172,6 +183,14 @@ KeyPoseMorphSolver::KeyPoseMorphSolver(const std::vector<StickFigure>& input_key
   } else {
     st.keys = input_keys;
   }
+  // The delay weights are key 1's; on the common figure a dummy on one of
+  // key 1's edges takes the weight interpolated along it.
+  std::optional<LocalTiming> timing;
+  if (options.timing) {
+    options.timing->check_vertex_count(input_keys[0].vertices.size(), "key 1");
+    timing = st.correspondence ? options.timing->on_matched_figure(st.correspondence->places[0], input_keys[0].edges)
+                               : *options.timing;
+  }
   const std::vector<StickFigure>& keys = st.keys;
   report_stage("check");
   check_same_graph(keys);
@@ -256,9 +275,16 @@ KeyPoseMorphSolver::KeyPoseMorphSolver(const std::vector<StickFigure>& input_key
     segment.stats.similarity = similarity;
     const double t0 = knots[s], t1 = knots[s + 1];
     const std::shared_ptr<const KeyPoseGuide>& guide = st.guide;
+    // Each segment on its own clock: the delays restart at every key.
+    std::shared_ptr<const LocalClock> clock;
+    if (timing && !timing->is_plain())
+      clock = std::make_shared<const LocalClock>(*timing, keys[0].edges, guide->part(), guide->part_count(),
+                                                 keys[s].vertices, keys[next].vertices);
     st.morphs.push_back(internal::prepare_guided_morph(
         pair, similarity,
-        [&]() -> std::unique_ptr<const GuideTrajectory> { return std::make_unique<const KeyPoseStretch>(guide, t0, t1); },
+        [&]() -> std::unique_ptr<const GuideTrajectory> {
+          return std::make_unique<const KeyPoseStretch>(guide, int(s), t0, t1, clock);
+        },
         paper, weights, Easing::None, segment.stats));
     segment.stats.morph_ms = segment.stats.factorize_ms;
     segment.triangulation = st.morphs.back().triangulation();

@@ -76,6 +76,11 @@ struct KeyPoseMorphOptions {
   std::optional<long long> enclosure_sides;
   std::optional<bool> verify;
   std::optional<FrameCheck> frame_check;
+  /// Delay weights per vertex of key 1 and an overlap (local_timing.h,
+  /// issue 31). Each segment runs them on its own clock, from its first key
+  /// to its next: every key stays exact at its frame, and the lagging parts
+  /// catch up by every key. Unset, or overlap 0: the plain sequence.
+  std::optional<LocalTiming> timing;
 };
 
 /// One segment: its frames [first_frame, last_frame] of the sequence, the

@@ -58,6 +58,7 @@ bool given(const MorphStickFiguresOptions& options, Option option) {
     case Option::Turns: return options.turns.has_value();
     case Option::Easing: return options.easing.has_value();
     case Option::Pins: return !options.pins.empty();
+    case Option::Timing: return options.timing.has_value();
     default: return false;  // frames, method, correspond: always in effect
   }
 }
@@ -103,6 +104,8 @@ const std::vector<MorphOptionRule>& morph_option_rules() {
     rules.push_back(count_rule(Option::Turns, rigid, kRigidOnly, -kMaxExtraTurns, kMaxExtraTurns, 0));
     rules.push_back(name_rule(Option::Easing, rigid, kRigidOnly, {easing_name(Easing::None), easing_name(Easing::InOut)},
                               easing_name(Easing::None)));
+    // Local timing (issue 31) delays parts of the rigid guide.
+    rules.push_back(base_rule(Option::Timing, rigid, kRigidOnly, OptionValueKind::Timing));
     // Figures drawn separately (issue 13): every method.
     rules.push_back(name_rule(Option::Correspond, kAllMethods, "",
                               {correspondence_mode_name(CorrespondenceMode::ByIndex),

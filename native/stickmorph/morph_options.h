@@ -32,6 +32,7 @@ enum class OptionValueKind {
   Name,   ///< one of choices; default_name
   Flag,   ///< true or false; default_flag
   Pins,   ///< vertex pairs "S:T"; no default (none given)
+  Timing, ///< delay weights per vertex and an overlap (local_timing.h); no default (none given)
 };
 
 /// One option of morph_stick_figures as the interfaces expose it.
@@ -85,7 +86,8 @@ void check_pins_need_auto(CorrespondenceMode mode, const std::vector<VertexPin>&
 ///         enclosure_sides, verify, frame_check, keep_node_frames), or a
 ///         rigid-only option (rotation, turns, easing) with another method,
 ///         or frame_check with verify false, or pins without
-///         correspond = Auto.
+///         correspond = Auto, or local timing (rigid only) with another
+///         method.
 void check_morph_options(const MorphStickFiguresOptions& options);
 
 }  // namespace stickmorph

@@ -36,7 +36,7 @@ GuidedMorph prepare_rigid_morph_checked(const CompatiblePair& pair, const MorphS
   return internal::prepare_guided_morph(
       pair, similarity,
       [&]() -> std::unique_ptr<const GuideTrajectory> {
-        return std::make_unique<const RigidGuide>(source, target.vertices, similarity);
+        return std::make_unique<const RigidGuide>(source, target.vertices, similarity, options.timing);
       },
       paper_options, weights, options.easing.value_or(Easing::None), stats);
 }
@@ -106,6 +106,7 @@ GuidedMorph prepare_rigid_morph(const StickFigure& source, const StickFigure& ta
     throw InvalidArgumentError("prepare_rigid_morph takes figures that correspond by index: match them with "
                                "correspond_figures first and pass its source and target");
   check_numeric_range(source, target, MorphMethod::Rigid);
+  if (options.timing) options.timing->check_vertex_count(source.vertices.size());
   const CompatiblePair pair = CompatiblePair::check(source, target);
   FigureTriangulationOptions paper;
   paper.method = options.steiner.value_or(SteinerMethod::Improved);
@@ -227,6 +228,7 @@ MorphStickFiguresResult morph_corresponding(const CompatiblePair& pair, const Mo
 MorphStickFiguresResult morph_stick_figures(const StickFigure& source, const StickFigure& target,
                                             const MorphStickFiguresOptions& options) {
   check_morph_options(options);
+  if (options.timing) options.timing->check_vertex_count(source.vertices.size());
   report_stage("check");
   if (options.correspond == CorrespondenceMode::ByIndex)
     return morph_corresponding(CompatiblePair::check(source, target), options);
@@ -239,9 +241,14 @@ MorphStickFiguresResult morph_stick_figures(const StickFigure& source, const Sti
   if (correspondence.pair && (correspondence.pair->source().vertices != correspondence.source.vertices ||
                               correspondence.pair->target().vertices != correspondence.target.vertices))
     throw InternalError("morph_stick_figures: the correspondence's checked pair is not its matched figures");
+  // The delay weights are the source's; a dummy on a source edge takes
+  // the weight interpolated along it.
+  MorphStickFiguresOptions matched_options = options;
+  if (options.timing)
+    matched_options.timing = options.timing->on_matched_figure(correspondence.source_places, source.edges);
   MorphStickFiguresResult result = morph_corresponding(
       correspondence.pair ? *correspondence.pair : CompatiblePair::check(correspondence.source, correspondence.target),
-      options);
+      matched_options);
   result.stats.correspond_ms = correspondence.milliseconds;
   result.correspondence = std::move(correspondence);
   return result;

@@ -34,6 +34,7 @@
 #include "stickmorph/figure_correspondence.h"
 #include "stickmorph/figure_triangulation.h"
 #include "stickmorph/guided_morph.h"
+#include "stickmorph/local_timing.h"
 #include "stickmorph/morph.h"
 #include "stickmorph/morph_options.h"  // check_morph_options and the options' rules
 #include "stickmorph/rigid_guide.h"
@@ -78,6 +79,11 @@ struct MorphStickFiguresOptions {
   std::optional<RotationDirection> rotation;   ///< default RotationDirection::Short
   std::optional<long long> turns;              ///< extra whole turns, ccw positive; default 0
   std::optional<Easing> easing;                ///< default Easing::None (even speed)
+  /// Per-vertex delay weights (one per source vertex, also with
+  /// correspond = Auto: the morph carries them onto the matched figure) and
+  /// an overlap: parts lag on their local clocks (local_timing.h, issue
+  /// 31). Unset, or overlap 0: the plain morph, bit for bit.
+  std::optional<LocalTiming> timing;
   /// ByIndex (default): vertex i becomes vertex i. Auto: the figures are
   /// matched (correspond_figures) and the matched figure is morphed.
   CorrespondenceMode correspond = CorrespondenceMode::ByIndex;

@@ -48,6 +48,7 @@ struct RigidGuide::State {
   std::vector<Vec2> source, target;
   std::optional<internal::EdgeVectorFit> fit;
   std::optional<internal::MotionTiming> timing;  // of the cumulative RMS displacement at u = j / kMotionSamples
+  std::optional<LocalClock> clock;               // local timing (issue 31); none for the plain guide
   /// The figure at u whose edge e points along directions[e] (a unit
   /// vector): the least-squares positions for the edges at their lengths
   /// at u (EdgeVectorFit), each part's centroid on its straight line.
@@ -55,7 +56,7 @@ struct RigidGuide::State {
 };
 
 RigidGuide::RigidGuide(const StickFigure& source, const std::vector<Vec2>& target_vertices,
-                       const SimilarityMotion& similarity)
+                       const SimilarityMotion& similarity, const std::optional<LocalTiming>& local_timing)
     : state_(std::make_unique<State>()) {
   State& s = *state_;
   s.n = int(source.vertices.size());
@@ -116,6 +117,12 @@ RigidGuide::RigidGuide(const StickFigure& source, const std::vector<Vec2>& targe
   }
   samples.back() = 1;
   s.timing.emplace(std::move(samples), std::move(motion), 1e-10 * size, internal::kMostUnevenSpeed);
+  // The table above is the plain guide's on purpose: local times are
+  // delays on the morph's own clock.
+  if (local_timing && !local_timing->is_plain()) {
+    local_timing->check_vertex_count(std::size_t(s.n), "the guide's figure");
+    s.clock.emplace(*local_timing, s.edges, s.fit->part(), s.fit->part_count(), s.source, s.target);
+  }
 }
 
 RigidGuide::~RigidGuide() = default;
@@ -124,6 +131,22 @@ RigidGuide& RigidGuide::operator=(RigidGuide&&) noexcept = default;
 
 std::vector<Vec2> RigidGuide::at(double u) const {
   const State& s = *state_;
+  if (s.clock) {
+    // Every edge at its own local time; the parts then placed by their
+    // leading vertices (LocalClock::place_parts), so the centroids given to
+    // the fit only need to be some consistent placement.
+    const std::vector<double> times = s.clock->edge_times(u);
+    std::vector<Vec2> edge_vectors(s.edges.size());
+    for (std::size_t e = 0; e < s.edges.size(); ++e) {
+      const double tau = times[e];
+      const double a = s.angle0[e] + tau * s.turn[e];
+      const double length = (1 - tau) * s.length0[e] + tau * s.length1[e];
+      edge_vectors[e] = {length * std::cos(a), length * std::sin(a)};
+    }
+    std::vector<Vec2> positions = s.fit->positions(edge_vectors, s.center0);
+    s.clock->place_parts(u, positions);
+    return positions;
+  }
   std::vector<Vec2> directions(s.edges.size());
   for (std::size_t e = 0; e < s.edges.size(); ++e) {
     const double a = s.angle0[e] + u * s.turn[e];
@@ -144,6 +167,8 @@ std::vector<Vec2> RigidGuide::State::positions(double u, const std::vector<Vec2>
     for (int c = 0; c < 2; ++c) centroids[q][c] = (1 - u) * center0[q][c] + u * center1[q][c];
   return fit->positions(edge_vectors, centroids);
 }
+
+bool RigidGuide::retimed_by_morph() const { return !state_->clock; }
 
 double RigidGuide::parameter_at(double t, Easing easing) const {
   if (!(t >= 0 && t <= 1)) throw InvalidArgumentError("the morph time must be in [0, 1]");

@@ -22,9 +22,11 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "stickmorph/local_timing.h"
 #include "stickmorph/similarity_motion.h"
 #include "stickmorph/stick_figure.h"
 
@@ -66,9 +68,14 @@ class RigidGuide : public GuideTrajectory {
   /// `source`'s edges join the vertices; `target_vertices` (#V by 2) are
   /// the target's positions of the same vertices; `similarity` the morph's
   /// whole motion (its angle gives every edge's turn, with the extra turns).
+  /// `timing`, if given and not plain (local_timing.h; one weight per
+  /// vertex), runs every edge and part on its local clock: at(u) turns and
+  /// stretches each edge at its local time and places each part by its
+  /// leading vertices. parameter_at stays the plain guide's, so that the
+  /// delays are measured on the morph's own clock.
   /// @throws InvalidArgumentError if the vertex counts differ.
   RigidGuide(const StickFigure& source, const std::vector<Vec2>& target_vertices,
-             const SimilarityMotion& similarity);
+             const SimilarityMotion& similarity, const std::optional<LocalTiming>& timing = std::nullopt);
   ~RigidGuide() override;
   RigidGuide(RigidGuide&&) noexcept;
   RigidGuide& operator=(RigidGuide&&) noexcept;
@@ -91,6 +98,10 @@ class RigidGuide : public GuideTrajectory {
   /// exactly; increasing. A guide that does not move (beyond rounding)
   /// keeps t, eased.
   double parameter_at(double t, Easing easing = Easing::None) const override;
+
+  /// Not where local timing delays parts: the delays are part of the
+  /// motion, and retiming by the morph's own speed would move them.
+  bool retimed_by_morph() const override;
 
  private:
   struct State;
