@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "output_files.h"
+#include "timing_option.h"
 #include "stickmorph/compatible_triangulation.h"
 #include "stickmorph/errors.h"
 #include "stickmorph/figure_correspondence.h"
@@ -128,9 +129,11 @@ int run_key_poses(const ParsedArguments& arguments) {
   options.enclosure_sides = integer_option(arguments, "--enclosure-sides");
   if (option_value(arguments, "--no-verify")) options.verify = false;
   if (const std::string* name = option_value(arguments, "--frame-check")) options.frame_check = parse_frame_check(*name);
+  options.timing = timing_option(arguments);
 
   std::vector<StickFigure> figures;
   for (const std::string& path : arguments.positional) figures.push_back(read_figure_file(path));
+  if (options.timing) check_timing_length(arguments, *options.timing, figures[0].vertices.size(), arguments.positional[0]);
   const KeyPoseMorphResult result = morph_key_poses(figures, options);
   std::vector<std::string> files{key_pose_file_json(figures[0], result, options.verify.value_or(true))};
   if (svg) {

@@ -29,6 +29,7 @@
 #include "stickmorph/svg_output.h"
 #include "argument_parsing.h"
 #include "key_pose_command.h"
+#include "timing_option.h"
 #include "output_files.h"
 
 namespace stickmorph {
@@ -243,9 +244,11 @@ int run_morph(const ParsedArguments& arguments) {
   options.pins = matching.pins;
   // The triangulation drawn under the filmstrip needs every node's position.
   options.keep_node_frames = overlay;
+  options.timing = cli::timing_option(arguments);
   check_morph_options(options);
   const StickFigure source = read_figure_file(arguments.positional[0]);
   const StickFigure target = read_figure_file(arguments.positional[1]);
+  if (options.timing) cli::check_timing_length(arguments, *options.timing, source.vertices.size(), arguments.positional[0]);
   const std::string title = "stickmorph morph: " + (source.name.empty() ? arguments.positional[0] : source.name) +
                             " -> " + (target.name.empty() ? arguments.positional[1] : target.name);
 
@@ -352,6 +355,9 @@ const std::vector<CommandSpec>& commands() {
         {"--rotation", "", "DIR", "rigid: which way the figure turns as a whole: short (default), ccw or cw"},
         {"--turns", "", "K", turns_help()},
         {"--easing", "", "NAME", "rigid: none (default: even speed) or in-out (slow in and out)"},
+        {"--timing", "", "FILE.json",
+         "rigid: local timing, {\"delay\": [w per source vertex, 0 to 1], \"overlap\": d in [0, 1)}: "
+         "weight-1 parts lag weight-0 parts by d (overlapping action)"},
         {"--correspond", "", "MODE", kCorrespondHelp},
         {"--pin", "", "S:T", kPinHelp, true},
         {"--no-verify", "", "", "skip the exact check of every frame"},

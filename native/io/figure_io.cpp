@@ -176,7 +176,7 @@ const char* file_kind(mode_t mode) {
 
 }  // namespace
 
-StickFigure read_figure_file(const std::string& path) {
+std::string read_input_file(const std::string& path) {
   const auto fail = [&path](int error_number) {
     throw FileError(path, error_number, path + ": cannot read file: " + std::strerror(error_number));
   };
@@ -216,8 +216,10 @@ StickFigure read_figure_file(const std::string& path) {
                       std::to_string(kMaxFigureFileBytes >> 20) + " MiB");
     }
   }
-  return parse_figure(text, path);
+  return text;
 }
+
+StickFigure read_figure_file(const std::string& path) { return parse_figure(read_input_file(path), path); }
 
 std::string figure_json(const StickFigure& figure, const std::string& name) {
   JsonWriter json;

@@ -19,6 +19,11 @@ StickFigure parse_figure(const std::string& text, const std::string& origin);
 /// Reads and parses the file at `path`. Throws JsonError if it cannot be read.
 StickFigure read_figure_file(const std::string& path);
 
+/// The bytes of the regular file at `path` (no FIFO, device or directory;
+/// at most 64 MiB): what every input file of the CLI is read with.
+/// @throws FileError naming the path and why it cannot be read.
+std::string read_input_file(const std::string& path);
+
 /// The figure as the JSON text of a stick figure file, named `name`, with
 /// shortest round-trip decimals: parse_figure reads back the same doubles
 /// (test regression files, the fuzzer's round-trip oracle).
