@@ -113,7 +113,7 @@ KeyPoseInputs key_pose_inputs(const py::object& keys_xy, const py::object& edges
                               const py::object& rotation, const py::object& turns, const py::object& steiner,
                               const py::object& weights, const py::object& enclosure_sides, const py::object& verify,
                               const py::object& frame_check, const py::object& correspond, const py::object& pins,
-                              const py::object& easing) {
+                              const py::object& easing, const py::object& delay, const py::object& overlap) {
   const sm::MorphStickFiguresOptions shared =
       to_morph_options(py::int_(sm::kDefaultMorphFrames), steiner, weights, enclosure_sides, py::str("rigid"),
                        verify, py::none(), py::none(), py::none(), py::none(), py::none(), frame_check);
@@ -123,6 +123,7 @@ KeyPoseInputs key_pose_inputs(const py::object& keys_xy, const py::object& edges
   options.enclosure_sides = shared.enclosure_sides;
   options.verify = shared.verify;
   options.frame_check = shared.frame_check;
+  options.timing = to_local_timing(delay, overlap);
   if (!correspond.is_none())
     options.correspond = sm::parse_correspondence_mode(to_name(correspond, "correspond"));
   // One #P by 2 list (keys 1 and 2) or one per pair of keys.
@@ -190,10 +191,11 @@ void bind_key_poses(py::module_& m) {
          const py::object& loop, const py::object& hold, const py::object& rotation, const py::object& turns,
          const py::object& steiner, const py::object& weights, const py::object& enclosure_sides,
          const py::object& verify, const py::object& frame_check, const py::object& correspond,
-         const py::object& pins, const py::object& easing, const py::object& progress) {
+         const py::object& pins, const py::object& easing, const py::object& progress, const py::object& delay,
+         const py::object& overlap) {
         KeyPoseInputs inputs = key_pose_inputs(keys_xy, edges, frames, keys_at, loop, hold, rotation, turns, steiner,
                                                weights, enclosure_sides, verify, frame_check, correspond, pins,
-                                               easing);
+                                               easing, delay, overlap);
         const std::vector<sm::StickFigure>& keys = inputs.keys;
         const sm::KeyPoseMorphOptions& options = inputs.options;
         std::shared_ptr<sm::Progress> watched = to_progress(progress);
@@ -224,7 +226,7 @@ void bind_key_poses(py::module_& m) {
       py::arg("turns") = py::none(), py::arg("steiner") = py::none(), py::arg("weights") = py::none(),
       py::arg("enclosure_sides") = py::none(), py::arg("verify") = py::none(), py::arg("frame_check") = py::none(),
       py::arg("correspond") = py::none(), py::arg("pins") = py::none(), py::arg("easing") = py::none(),
-      py::arg("progress") = py::none(),
+      py::arg("progress") = py::none(), py::arg("delay") = py::none(), py::arg("overlap") = py::none(),
       R"doc(Morphs a stick figure through a sequence of key poses (issue 28): one continuous,
 valid motion that shows key k exactly at frame keys_at[k], its velocity continuous through
 every key (unless hold stops it there). The same computation as
@@ -256,6 +258,10 @@ Args:
   progress: optional stickmorph.Progress to watch and cancel the call from another thread
     (stages "correspond", "check", "triangulate" once per segment, "frames" counted in
     frames); None: the one a `with progress:` block installed on this thread, if any.
+  delay, overlap: local timing as for morph(), given together: one delay weight per vertex of
+    key 1 (with correspond="auto" a dummy takes the weight interpolated along its edge of
+    key 1) and the overlap d in [0, 1). Each segment runs the delays on its own clock, key
+    to key, so every key stays exact at its frame and lagging parts catch up by every key.
 
 Returns:
   dict with "frames" (N by #V by 2 float64; frames[keys_at[k]] is key k exactly), "times"
@@ -290,10 +296,11 @@ stages "correspond", "check" and "triangulate").)doc")
                        const py::object& rotation, const py::object& turns, const py::object& steiner,
                        const py::object& weights, const py::object& enclosure_sides, const py::object& verify,
                        const py::object& frame_check, const py::object& correspond, const py::object& pins,
-                       const py::object& easing, const py::object& progress) {
+                       const py::object& easing, const py::object& progress, const py::object& delay,
+                       const py::object& overlap) {
              KeyPoseInputs inputs = key_pose_inputs(keys_xy, edges, frames, keys_at, loop, hold, rotation, turns,
                                                     steiner, weights, enclosure_sides, verify, frame_check,
-                                                    correspond, pins, easing);
+                                                    correspond, pins, easing, delay, overlap);
              std::shared_ptr<sm::Progress> watched = to_progress(progress);
              py::gil_scoped_release release;
              CallProgress installed(std::move(watched));
@@ -306,7 +313,8 @@ stages "correspond", "check" and "triangulate").)doc")
            py::arg("turns") = py::none(), py::arg("steiner") = py::none(), py::arg("weights") = py::none(),
            py::arg("enclosure_sides") = py::none(), py::arg("verify") = py::none(),
            py::arg("frame_check") = py::none(), py::arg("correspond") = py::none(), py::arg("pins") = py::none(),
-           py::arg("easing") = py::none(), py::arg("progress") = py::none())
+           py::arg("easing") = py::none(), py::arg("progress") = py::none(), py::arg("delay") = py::none(),
+           py::arg("overlap") = py::none())
       .def(
           "solve",
           [](sm::KeyPoseMorphSolver& solver, const py::object& time) {

@@ -423,12 +423,13 @@ time, without the GIL.)doc")
       .def(py::init([](const py::object& source_xy, const py::object& target_xy, const py::object& edges,
                        const py::object& steiner, const py::object& weights, const py::object& enclosure_sides,
                        const py::object& rotation, const py::object& turns, const py::object& easing,
-                       const py::object& target_edges) {
+                       const py::object& target_edges, const py::object& delay, const py::object& overlap) {
              // Arguments first, figures second, as morph() does; frames is
              // morph()'s default, unused here.
              const sm::MorphStickFiguresOptions options =
                  to_morph_options(py::int_(sm::kDefaultMorphFrames), steiner, weights, enclosure_sides,
-                                  py::str("rigid"), py::none(), rotation, turns, easing);
+                                  py::str("rigid"), py::none(), rotation, turns, easing, py::none(), py::none(),
+                                  py::none(), delay, overlap);
              const auto figures =
                  make_figure_pair(source_xy, target_xy, edges, target_edges, "source_xy", "target_xy");
              py::gil_scoped_release release;
@@ -437,7 +438,7 @@ time, without the GIL.)doc")
            py::arg("source_xy"), py::arg("target_xy"), py::arg("edges"), py::arg("steiner") = py::none(),
            py::arg("weights") = py::none(), py::arg("enclosure_sides") = py::none(),
            py::arg("rotation") = py::none(), py::arg("turns") = py::none(), py::arg("easing") = py::none(),
-           py::arg("target_edges") = py::none())
+           py::arg("target_edges") = py::none(), py::arg("delay") = py::none(), py::arg("overlap") = py::none())
       .def(
           "solve",
           [](RigidMorphSolverBinding& self, const py::object& t, const py::object& all_nodes,
@@ -489,11 +490,12 @@ Raises:
          const py::object& enclosure_sides, const py::object& method, const py::object& verify,
          const py::object& target_edges, const py::object& rotation, const py::object& turns,
          const py::object& easing, const py::object& correspond, const py::object& pins,
-         const py::object& frame_check, const py::object& progress) {
+         const py::object& frame_check, const py::object& progress, const py::object& delay,
+         const py::object& overlap) {
         // Arguments first, figures second, as the CLI does.
         const sm::MorphStickFiguresOptions options =
             to_morph_options(frames, steiner, weights, enclosure_sides, method, verify, rotation, turns, easing,
-                             correspond, pins, frame_check);
+                             correspond, pins, frame_check, delay, overlap);
         std::shared_ptr<sm::Progress> watched = to_progress(progress);
         const auto figures =
             make_figure_pair(source_xy, target_xy, edges, target_edges, "source_xy", "target_xy");
@@ -513,7 +515,7 @@ Raises:
       py::arg("method") = "rigid", py::arg("verify") = py::none(), py::arg("target_edges") = py::none(),
       py::arg("rotation") = py::none(), py::arg("turns") = py::none(), py::arg("easing") = py::none(),
       py::arg("correspond") = py::none(), py::arg("pins") = py::none(), py::arg("frame_check") = py::none(),
-      py::arg("progress") = py::none(),
+      py::arg("progress") = py::none(), py::arg("delay") = py::none(), py::arg("overlap") = py::none(),
       with_limits(R"doc(Morphs one stick figure into a compatible one (paper, Algorithm 3).
 
 The rigid method (default) morphs as rigidly as validity allows: the
@@ -568,6 +570,16 @@ Args:
     does and the matched figure is morphed (every frame verified as usual).
   pins: with correspond="auto", optional #P by 2 integer array-like of
     (source vertex, target vertex) pairs the matching must respect.
+  delay, overlap: local timing (overlapping action), given together. delay
+    is #V delay weights in [0, 1], one per source vertex (with
+    correspond="auto" a dummy takes the weight interpolated along its
+    edge); overlap d in [0, 1). Every part moves at its local time
+    clamp((t - d w) / (1 - d), 0, 1): weight-0 parts lead and finish at
+    1 - d, weight-1 parts start at d and finish last; an edge turns and
+    stretches at the mean of its ends' local times. Frames stay valid and
+    verified; where the delayed motion is not valid the morph gives way as
+    little as validity needs. overlap=0 is the plain morph, bit for bit.
+    Rigid only.
 
   The options marked "barycentric only" (steiner, weights, enclosure_sides,
   verify) also apply to rigid; they default to None (not given), and giving

@@ -67,7 +67,8 @@ py::dict option_rules_dict() {
         entry["default"] = rule.default_name;
         break;
       case sm::OptionValueKind::Flag: entry["default"] = rule.default_flag; break;
-      case sm::OptionValueKind::Pins: break;  // none by default; only with correspond="auto"
+      case sm::OptionValueKind::Pins: break;    // none by default; only with correspond="auto"
+      case sm::OptionValueKind::Timing: break;  // none by default; with overlap=
     }
     rules[sm::describe_option(rule.option, sm::OptionSpelling::Keyword).c_str()] = entry;
   }

@@ -220,6 +220,34 @@ double to_time(const py::object& object) {
   return t;
 }
 
+std::optional<sm::LocalTiming> to_local_timing(const py::object& delay, const py::object& overlap) {
+  if (delay.is_none() && overlap.is_none()) return std::nullopt;
+  if (overlap.is_none())
+    throw sm::InvalidArgumentError("delay needs overlap (a number in [0, 1): how far weight-1 parts lag)");
+  if (delay.is_none())
+    throw sm::InvalidArgumentError("overlap needs delay (one weight in [0, 1] per source vertex)");
+  const py::array array = as_array(delay, "delay");
+  if (array.ndim() != 1) throw sm::InvalidArgumentError("delay must have shape (#V,), got " + shape_text(array));
+  const char kind = array.dtype().kind();
+  if (kind != 'i' && kind != 'u' && kind != 'f')
+    throw sm::InvalidArgumentError("delay must hold real numbers, got dtype " + dtype_text(array));
+  const auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
+  if (!values) throw py::error_already_set();
+  std::vector<double> weights(values.data(), values.data() + array.shape(0));
+  if (PyBool_Check(overlap.ptr()) || py::isinstance<py::str>(overlap) ||
+      !(PyFloat_Check(overlap.ptr()) || PyIndex_Check(overlap.ptr()) || py::hasattr(overlap, "__float__")))
+    throw sm::InvalidArgumentError("overlap must be a number in [0, 1), got " +
+                                   py::str(py::type::of(overlap).attr("__name__")).cast<std::string>());
+  double d = 0;
+  try {
+    d = py::float_(overlap).cast<double>();
+  } catch (py::error_already_set&) {
+    throw sm::InvalidArgumentError("overlap must be one number in [0, 1), got " +
+                                   py::str(py::type::of(overlap).attr("__name__")).cast<std::string>());
+  }
+  return sm::LocalTiming(std::move(weights), d);
+}
+
 py::dict places_dict(const std::vector<sm::MatchedPlace>& places) {
   py::dict dict;
   dict["vertex"] = place_array(places, &sm::MatchedPlace::vertex);

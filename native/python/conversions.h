@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,6 +20,7 @@
 #include "stickmorph/errors.h"
 #include "stickmorph/figure_correspondence.h"
 #include "stickmorph/figure_triangulation.h"
+#include "stickmorph/local_timing.h"
 #include "stickmorph/stick_figure.h"
 
 namespace stickmorph::python {
@@ -56,6 +58,12 @@ std::vector<sm::VertexPin> to_pins(const py::object& object);
 /// A solver's time argument t in [0, 1]: any real number (int, float, NumPy
 /// scalar); booleans, strings and arrays of several values are refused.
 double to_time(const py::object& object);
+
+/// delay= (#V real numbers) and overlap= (one number) as a local timing
+/// (local_timing.h), or none when both are None.
+/// @throws InvalidArgumentError: one without the other, a wrong shape or
+///         type, or LocalTiming's range check naming the entry.
+std::optional<sm::LocalTiming> to_local_timing(const py::object& delay, const py::object& overlap);
 
 /// Where each matched vertex is on one drawing: "vertex", "edge" and
 /// "fraction", #m arrays each (MatchedPlace).

@@ -13,7 +13,8 @@ sm::MorphStickFiguresOptions to_morph_options(const py::object& frames, const py
                                               const py::object& method, const py::object& verify,
                                               const py::object& rotation, const py::object& turns,
                                               const py::object& easing, const py::object& correspond,
-                                              const py::object& pins, const py::object& frame_check) {
+                                              const py::object& pins, const py::object& frame_check,
+                                              const py::object& delay, const py::object& overlap) {
   constexpr sm::OptionSpelling kKeyword = sm::OptionSpelling::Keyword;
   sm::MorphStickFiguresOptions options;
   options.spelling = kKeyword;
@@ -40,6 +41,7 @@ sm::MorphStickFiguresOptions to_morph_options(const py::object& frames, const py
   if (!easing.is_none()) options.easing = sm::parse_easing(to_name(easing, "easing"));
   if (!correspond.is_none()) options.correspond = sm::parse_correspondence_mode(to_name(correspond, "correspond"));
   options.pins = to_pins(pins);
+  options.timing = to_local_timing(delay, overlap);
   sm::check_morph_options(options);
   return options;
 }

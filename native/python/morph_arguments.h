@@ -20,6 +20,7 @@ stickmorph::MorphStickFiguresOptions to_morph_options(
     const pybind11::object& enclosure_sides, const pybind11::object& method, const pybind11::object& verify,
     const pybind11::object& rotation, const pybind11::object& turns, const pybind11::object& easing,
     const pybind11::object& correspond = pybind11::none(), const pybind11::object& pins = pybind11::none(),
-    const pybind11::object& frame_check = pybind11::none());
+    const pybind11::object& frame_check = pybind11::none(), const pybind11::object& delay = pybind11::none(),
+    const pybind11::object& overlap = pybind11::none());
 
 }  // namespace stickmorph::python
