@@ -273,6 +273,11 @@ def measure_pair(cli, corpus, entry, overlaps, frame_count, exact_check, keep_st
             weights[list(entry["limb_vertices"])] = 1.0
             reference = reference_delayed(plain[0], plain[1], edges, weights, d)
             row["reference_lag"] = lag(reference, plain[1], edges, limb_edges)["lag"]
+            # how far the engine's frames are from it: the largest vertex distance over the frames,
+            # over the figure's size (the diagonal of the source's bounding box)
+            size = float(np.hypot(*np.ptp(src, axis=0))) or 1.0
+            if len(run[0]) == len(reference):
+                row["reference_departure"] = float(np.abs(run[0] - reference).max() / size)
             if topology is not None:
                 row["reference_bad_frames"], _ = check_frames(topology, reference)
         if plain is not None:
@@ -400,6 +405,22 @@ def pick_filmstrips(entries, names, count=2):
     return set(chosen[:count])
 
 
+def build_source(build_dir):
+    """What the CLI was built from: the build's source folder (its CMakeCache.txt), that
+    folder's commit and whether its engine (native/) had uncommitted changes; None where unknown."""
+    try:
+        cache = (pathlib.Path(build_dir) / "CMakeCache.txt").read_text()
+        source = next(line.split("=", 1)[1] for line in cache.splitlines()
+                      if line.startswith("CMAKE_HOME_DIRECTORY:"))
+        commit = subprocess.run(["git", "-C", source, "rev-parse", "--short=12", "HEAD"], capture_output=True,
+                                text=True, check=True).stdout.strip()
+        status = subprocess.run(["git", "-C", source, "status", "--porcelain", "--untracked-files=no", "--",
+                                 "native"], capture_output=True, text=True, check=True).stdout
+    except (OSError, StopIteration, subprocess.CalledProcessError):
+        return None
+    return {"commit": commit, "uncommitted_native": bool(status.strip())}
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("corpus", type=pathlib.Path, help="folder with manifest.json (bench/local_timing_corpus.py)")
@@ -443,7 +464,9 @@ def main(argv=None):
     summary = summarize(pairs, overlaps)
     print_report(pairs, summary, overlaps)
     if args.json:
-        doc = {"corpus": str(args.corpus), "seed": manifest.get("seed"), "frames": args.frames,
+        doc = {"command": "/usr/bin/python3 bench/local_timing.py " + " ".join(argv if argv is not None else sys.argv[1:]),
+               "build": build_source(args.build_dir),
+               "corpus": str(args.corpus), "seed": manifest.get("seed"), "frames": args.frames,
                "overlaps": overlaps, "tolerance": TOLERANCE, "min_turn_deg": MIN_TURN_DEG,
                "timing_in_help": "--timing" in help_text, "exact_check": not args.no_exact_check,
                "seconds": round(time.monotonic() - started, 1), "summary": summary, "pairs": pairs}

@@ -198,6 +198,12 @@ def local_timing_section(doc, out_path, plot_dir):
           "and last frames exact and d = 0 the plain morph bit for bit. *Invalid frames*: frames the independent "
           "exact check of `bench/multipart_check.py` refuses (the CLI verifies every frame itself and refuses a "
           "run with one that fails: *runs refused*).\n"]
+    build = doc.get("build") or {}
+    if doc.get("command"):
+        md.append(f"Measured with `{doc['command']}`"
+                  + (f", the CLI built from {build['commit']}"
+                     + (" with uncommitted changes to the engine (native/)" if build.get("uncommitted_native") else "")
+                     if build.get("commit") else "") + ".\n")
     if not doc.get("timing_in_help", True):
         md.append("The CLI measured lists no `--timing` in `stickmorph morph --help`: the timed runs below are its "
                   "refusals.\n")
