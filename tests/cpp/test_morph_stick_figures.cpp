@@ -279,7 +279,9 @@ TEST_CASE("the option-name table names every option once") {
     CHECK(seen.insert(int(row.option)).second);
     CHECK(keywords.insert(row.keyword).second);
   }
-  CHECK(seen.size() == std::size_t(Option::FrameCheck) + 1);
+  CHECK(seen.size() == std::size_t(Option::Timing) + 1);
+  CHECK(describe_option(Option::Timing, OptionSpelling::CommandLine) == "option --timing");
+  CHECK(describe_option(Option::Timing, OptionSpelling::Keyword) == "delay");
   CHECK(describe_option(Option::Correspond, OptionSpelling::CommandLine) == "option --correspond");
   CHECK(describe_option(Option::Pins, OptionSpelling::CommandLine) == "option --pin");
   CHECK(describe_option(Option::Pins, OptionSpelling::Keyword) == "pins");
@@ -324,7 +326,7 @@ TEST_CASE("option_applies: the triangulation's options not to linear, the rotati
     CHECK(option_applies(option, MorphMethod::Barycentric));
     CHECK_FALSE(option_applies(option, MorphMethod::Linear));
   }
-  for (const Option option : {Option::Rotation, Option::Turns, Option::Easing}) {
+  for (const Option option : {Option::Rotation, Option::Turns, Option::Easing, Option::Timing}) {
     CHECK(option_applies(option, MorphMethod::Rigid));
     CHECK_FALSE(option_applies(option, MorphMethod::Barycentric));
     CHECK_FALSE(option_applies(option, MorphMethod::Linear));
