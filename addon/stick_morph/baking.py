@@ -124,6 +124,29 @@ def vertex_groups(obj, only=None):
     return members
 
 
+def vertex_group_weights(obj, name):
+    """[(vertex index, weight), ...] of the mesh object's vertex group `name`
+    (its members, weight 0 included), or None when it has no group of that
+    name: the delay weights of local timing (issue 31), which
+    core.delay_weights checks and completes. Object Mode data, as
+    vertex_groups."""
+    group = obj.vertex_groups.get(name) if name else None
+    if group is None:
+        return None
+    index = group.index
+    return [(vertex.index, element.weight) for vertex in obj.data.vertices for element in vertex.groups
+            if element.group == index]
+
+
+def delay_weights(obj, vertex_count, group, role="the source mesh"):
+    """The delay weights of obj's vertex group `group` (core.delay_weights:
+    None for no group, StickMorphError for a group missing or empty)."""
+    if not group:
+        return None
+    return core.delay_weights(vertex_count, vertex_group_weights(obj, group), group, obj.name, role,
+                              [g.name for g in obj.vertex_groups])
+
+
 # ----------------------------------------------------------------- helpers ----
 
 def find_fcurve(anim_data, data_path):

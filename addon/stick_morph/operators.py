@@ -36,7 +36,7 @@ from .common import BakeSettings, StickMorphError, is_pin_group, next_pin_name
 # ui.py need not import this module); dependency_status is re-exported for
 # scripts and tests that ask the operators' module.
 from .helpers import dependency_status, edited_meshes, resolve_pair  # noqa: F401
-from .properties import OPTION_NAMES, addon_preferences, bake_settings, option_properties
+from .properties import OPTION_NAMES, addon_preferences, bake_settings, mesh_option_properties, option_properties
 
 class Progress(StageTimer):
     """The window manager's progress indicator, one call per stage, and the
@@ -293,6 +293,7 @@ class STICKMORPH_OT_bake(ModalBake, bpy.types.Operator):
         "frame_start": IntProperty(name="Start", description="Frame showing the source",
                                    default=BakeSettings.frame_start, options=set()),
         **option_properties(),
+        **mesh_option_properties(),
     }
 
     def draw(self, context):
@@ -313,6 +314,9 @@ class STICKMORPH_OT_bake(ModalBake, bpy.types.Operator):
         # The pins: vertex groups named pin* (core.read_pins checks them).
         source_groups = baking.vertex_groups(source, is_pin_group)
         target_groups = baking.vertex_groups(target, is_pin_group)
+        # Local timing (issue 31): the source's delay group, refused here if
+        # it is missing or empty.
+        source_delay = baking.delay_weights(source, len(source_world), settings.delay_group)
         progress.stage("read", 5)
         source_name, target_name = source.name, target.name
 
@@ -320,7 +324,7 @@ class STICKMORPH_OT_bake(ModalBake, bpy.types.Operator):
             # Checks, then by index or matched (settings.correspondence).
             prepared = core.prepare_pair(source_world, source_edges, source_faces, source_name,
                                          target_world, target_edges, target_faces, target_name, settings,
-                                         source_groups, target_groups)
+                                         source_groups, target_groups, source_delay)
             timer.stage("check", 15)
             # By index, or matched if Automatic's morph by index finds the pair
             # incompatible that way (the bake's one compatibility check).
@@ -360,6 +364,9 @@ class STICKMORPH_OT_bake(ModalBake, bpy.types.Operator):
         steiner = int(morph.stats.get("steiner_vertices", 0))
         motion_short, motion_text = core.motion_summary(morph, settings.frame_start)
         match_short, match_text = core.correspondence_summary(prepared.matching, source.name, target.name)
+        timing_text = core.local_timing_summary(morph, settings.delay_group)
+        if timing_text:
+            motion_text = f"{motion_text}; {timing_text}"
         scene_settings = getattr(context.scene, "stick_morph", None)
         if scene_settings is not None:
             scene_settings.last_result = result.name

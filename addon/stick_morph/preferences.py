@@ -8,8 +8,8 @@ the Load Defaults operator is in operators.py with the others.
 import bpy
 from bpy.props import FloatProperty, IntProperty, PointerProperty, StringProperty
 
-from .properties import (_DEFAULTS, OPTION_NAMES, addon_preferences, bake_settings,  # noqa: F401
-                         key_pose_properties, option_properties)
+from .properties import (_DEFAULTS, MESH_OPTIONS, OPTION_NAMES, addon_preferences, bake_settings,  # noqa: F401
+                         key_pose_properties, mesh_option_properties, option_properties)
 
 
 class StickMorphPreferences(bpy.types.AddonPreferences):
@@ -35,6 +35,9 @@ class StickMorphSceneSettings(bpy.types.PropertyGroup):
     """Per-scene choices of the sidebar panel and the last bake's statistics."""
     __annotations__ = {
         **option_properties(),
+        # The delay group (issue 31): picked in the Local Timing sub-panel
+        # from the source's vertex groups.
+        **mesh_option_properties(),
         "source": PointerProperty(name="Source", type=bpy.types.Object, poll=_is_mesh, options=set(),
                                   description="Edge mesh the morph starts from (empty: the selected non-active mesh)"),
         "target": PointerProperty(name="Target", type=bpy.types.Object, poll=_is_mesh, options=set(),

@@ -15,25 +15,33 @@ layout. Names are short enough for the sidebar's label column at its default
 width in 3.4 (ui.py); the descriptions say the rest.
 """
 
-from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty
+from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty, StringProperty
 
 from . import common
 
 # The options copied from the preferences into an operator call (when the
 # caller did not set them) and into the scene settings (Load Defaults): the
-# fields of common.BakeSettings but frame_start, which has no preference.
+# fields of common.BakeSettings but frame_start and MESH_OPTIONS, which have
+# no preference.
 OPTION_NAMES = ("motion", "correspondence", "rotation", "turns", "frame_count", "steiner", "weights",
                 "enclosure_sides", "plane", "easing", "renderable", "tube_radius", "show_triangulation",
-                "planarity_tolerance", "set_frame_range")
+                "planarity_tolerance", "set_frame_range", "overlap")
+
+# The options that name data of the meshes (issue 31's delay group, a vertex
+# group of the source): like frame_start, no preference (a default group
+# name would refuse every mesh without that group); the operators, the
+# scene settings and BakeSettings have them (mesh_option_properties).
+MESH_OPTIONS = ("delay_group",)
 
 # The options of Bake Key Poses (sequence_operators.py): motion and easing
 # too, so that a setting key poses cannot follow is refused with a report,
 # not ignored (the panel passes the scene's). Rebake Shape Keys: one mesh,
 # by index, Rigid.
 SEQUENCE_OPTIONS = ("motion", "correspondence", "rotation", "turns", "steiner", "weights", "enclosure_sides",
-                    "plane", "easing", "renderable", "tube_radius", "planarity_tolerance", "set_frame_range")
+                    "plane", "easing", "renderable", "tube_radius", "planarity_tolerance", "set_frame_range",
+                    "overlap")
 REBAKE_OPTIONS = ("rotation", "turns", "steiner", "weights", "enclosure_sides", "plane", "easing", "renderable",
-                  "tube_radius", "planarity_tolerance", "set_frame_range")
+                  "tube_radius", "planarity_tolerance", "set_frame_range", "overlap")
 
 # The properties' defaults, defined once (common.BakeSettings).
 _DEFAULTS = common.BakeSettings()
@@ -42,12 +50,17 @@ _DEFAULTS = common.BakeSettings()
 # from common's copy of stickmorph.limits.
 _LIMITS = common.ENGINE_LIMITS
 
+# The Overlap slider's largest value: the engine takes [0, 1), and near 1 a
+# lagging part would wait for almost the whole motion and then jump.
+OVERLAP_MAX = 0.95
+
 
 def bake_settings(data):
-    """The bake options of the operator (any holder of option_properties and
-    frame_start) as the one object core and baking take: read once per bake."""
+    """The bake options of the operator (any holder of option_properties,
+    mesh_option_properties and frame_start) as the one object core and
+    baking take: read once per bake."""
     return common.BakeSettings(frame_start=data.frame_start,
-                               **{name: getattr(data, name) for name in OPTION_NAMES})
+                               **{name: getattr(data, name) for name in OPTION_NAMES + MESH_OPTIONS})
 
 
 def option_properties():
@@ -155,6 +168,25 @@ def option_properties():
         "set_frame_range": BoolProperty(
             name="Set Frame Range", description="Set the scene's frame range to the morph's frames",
             default=defaults.set_frame_range, options=set()),
+        # Local timing (issue 31), with the delay group (mesh_option_properties).
+        "overlap": FloatProperty(
+            name="Overlap",
+            description="With a Delay Group: how far the parts of weight 1 lag those of weight 0, as a fraction "
+                        "of the motion (0: no lag, the plain morph); Rigid motion only",
+            default=defaults.overlap, options=set(), min=0.0, max=OVERLAP_MAX, subtype="FACTOR", precision=3),
+    }
+
+
+def mesh_option_properties():
+    """Fresh definitions of MESH_OPTIONS (the operators and the scene
+    settings; not the preferences)."""
+    return {
+        "delay_group": StringProperty(
+            name="Delay Group", default=_DEFAULTS.delay_group, options=set(),
+            description="Local timing: a vertex group of the source mesh (for key poses, of the first key) whose "
+                        "weights say which parts lag: weight 0 leads, weight 1 lags by Overlap; vertices not in "
+                        "the group weigh 0 (empty: every part on the same clock). Paint it in Weight Paint mode; "
+                        "Rigid motion only"),
     }
 
 

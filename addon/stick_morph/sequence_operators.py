@@ -20,7 +20,8 @@ from bpy.props import IntProperty, StringProperty
 
 from .common import BakeSettings, StickMorphError, is_pin_group
 from .operators import BakeExecute, ModalBake, show_in_status_bar
-from .properties import REBAKE_OPTIONS, SEQUENCE_OPTIONS, key_pose_properties, option_properties
+from .properties import (MESH_OPTIONS, REBAKE_OPTIONS, SEQUENCE_OPTIONS, key_pose_properties,
+                         mesh_option_properties, option_properties)
 
 KEY_FRAME_PROPERTY = "stick_morph_key_frame"
 KEYS_TAG = "stick_morph_keys"  # a sequence result's keys, JSON, to replace it when rebaked
@@ -34,7 +35,8 @@ def _options(names):
 
 
 def _settings(op, names, frame_start, **fixed):
-    return BakeSettings(frame_start=frame_start, **{name: getattr(op, name) for name in names}, **fixed)
+    return BakeSettings(frame_start=frame_start, **{name: getattr(op, name) for name in names + MESH_OPTIONS},
+                        **fixed)
 
 
 def _finish(op, context, result, previous, created, settings, first_frame, frame_count, sequence, names,
@@ -53,6 +55,9 @@ def _finish(op, context, result, previous, created, settings, first_frame, frame
     vertices = sequence.frames_world.shape[1]
     steiner = sum(int(s.get("steiner_vertices", 0)) for s in sequence.segments)
     match = f"matched ({sequence.why})" if sequence.matched else "by index"
+    if sequence.overlap is not None:
+        match += (f"; local timing: the delay group '{settings.delay_group}' lags by {sequence.overlap:.3g} "
+                  "of each segment")
     scene_settings = getattr(context.scene, "stick_morph", None)
     if scene_settings is not None:
         scene_settings.last_result = result.name
@@ -92,6 +97,7 @@ class STICKMORPH_OT_bake_sequence(ModalBake, bpy.types.Operator):
                                                "their own (not set: the scene's current frame)"),
         **key_pose_properties(),
         **_options(SEQUENCE_OPTIONS),
+        **mesh_option_properties(),
     }
 
     preference_options = SEQUENCE_OPTIONS
@@ -155,12 +161,14 @@ class STICKMORPH_OT_bake_sequence(ModalBake, bpy.types.Operator):
         depsgraph = baking.evaluated_depsgraph(context)
         data = [baking.mesh_world_data(obj, depsgraph) for obj in objects]
         groups = [baking.vertex_groups(obj, is_pin_group) for obj in objects]
+        # Local timing (issue 31): the delay group of the first key.
+        delay = baking.delay_weights(objects[0], len(data[0][0]), settings.delay_group, "the first key")
         progress.stage("read", 5)
         loop, hold = self.loop, [self.hold] * len(names) if self.hold else None
 
         def work(timer):  # free of bpy: the worker thread of a modal bake
             prepared = sequence.prepare_keys([d[0] for d in data], [d[1] for d in data], [d[2] for d in data],
-                                             names, settings, groups)
+                                             names, settings, groups, delay)
             timer.stage("check", 15)
             result = sequence.morph_keys(prepared, settings, frame_count, keys_at, loop, hold)
             timer.stage("morph", 70)
@@ -239,6 +247,7 @@ class STICKMORPH_OT_rebake_shape_keys(BakeExecute, bpy.types.Operator):
                                  description="The mesh whose shape-key animation to rebake (empty: the active object)"),
         "hold": key_pose_properties()["hold"],
         **_options(REBAKE_OPTIONS),
+        **mesh_option_properties(),
     }
 
     preference_options = REBAKE_OPTIONS
@@ -268,8 +277,11 @@ class STICKMORPH_OT_rebake_shape_keys(BakeExecute, bpy.types.Operator):
         shapes = [baking.shape_key_world(obj, basis if pose.key < 0 else blocks[pose.key], depsgraph)
                   for pose in poses]
         names = [f"{basis.name if pose.key < 0 else blocks[pose.key].name}, frame {pose.frame}" for pose in poses]
+        # Local timing (issue 31): a vertex group of the mesh itself.
+        delay = baking.delay_weights(obj, len(shapes[0]), settings.delay_group, "the mesh")
         progress.stage("read", 5)
-        prepared = sequence.prepare_keys(shapes, [edges] * len(poses), [faces] * len(poses), names, settings)
+        prepared = sequence.prepare_keys(shapes, [edges] * len(poses), [faces] * len(poses), names, settings,
+                                         delay=delay)
         first = poses[0].frame
         frame_count = poses[-1].frame - first + 1
         hold = [a or self.hold for a in sequence.pose_holds(poses)]

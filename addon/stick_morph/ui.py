@@ -1,6 +1,7 @@
-"""The sidebar panel (View3D > Sidebar > Stick Morph) and its Pins and
-Advanced sub-panels; the same layout draws the operator's Adjust Last
-Operation panel (without the pins, which are mesh data, not options).
+"""The sidebar panel (View3D > Sidebar > Stick Morph) and its Pins, Local
+Timing, Key Poses and Advanced sub-panels; the same layout draws the
+operator's Adjust Last Operation panel (without the pins, which are mesh
+data, not options).
 
 Sized for the sidebar's default width in Blender 3.4 (220 px at scale 1): in
 a property-split row the label column holds about 7 characters, so those rows
@@ -10,13 +11,14 @@ split, where the label has the whole width. No row has a keyframe decorator
 (use_property_decorate = False; the properties are not animatable either).
 """
 
+import json
 import textwrap
 
 import bpy
 
 from .common import StickMorphError, pin_names, property_applies
 from .helpers import dependency_status, edited_meshes, resolve_pair
-from .properties import OPTION_NAMES, REBAKE_OPTIONS, SEQUENCE_OPTIONS
+from .properties import MESH_OPTIONS, OPTION_NAMES, REBAKE_OPTIONS, SEQUENCE_OPTIONS
 
 # Longest label of a property-split row that 3.4's default sidebar shows in
 # full: "Weights" and "Steiner" were, "Enclos…" (Enclosure Sides) was not
@@ -44,6 +46,9 @@ ADVANCED_FULL = (("enclosure_sides", None),)
 # Too long for any row: a label line above a field without text.
 ADVANCED_LABELLED = (("planarity_tolerance", "Planarity tolerance:"),)
 ADVANCED = tuple(name for name, _ in ADVANCED_SPLIT + ADVANCED_FULL + ADVANCED_LABELLED)
+# Local timing (issue 31): the delay group, a search over the source mesh's
+# vertex groups (draw_local_timing), and the overlap slider, full width.
+LOCAL_TIMING = (("delay_group", "Delay Group"), ("overlap", None))
 
 # Options that only some motions use are drawn greyed out (row.active =
 # False, still editable, as Blender greys out settings that have no effect)
@@ -53,6 +58,8 @@ def row_active(data, name):
     """Whether the option `name` has an effect with the other options of data."""
     if name == "tube_radius":
         return bool(getattr(data, "renderable", True))
+    if name == "overlap" and not getattr(data, "delay_group", ""):
+        return False  # no delay group: nothing lags
     return property_applies(name, getattr(data, "motion", "RIGID"), _option_methods())
 
 
@@ -136,6 +143,65 @@ def pin_preview(context, settings):
     return len(both), text, problems
 
 
+def delay_group_owner(context, settings):
+    """The mesh whose vertex groups the sidebar's Delay Group lists: the
+    source of the pair a bake would use (resolve_pair), else the active mesh
+    (the first key or the mesh of Rebake Shape Keys, say); None if neither."""
+    try:
+        source, _ = resolve_pair(context, settings.source.name if settings.source else "",
+                                 settings.target.name if settings.target else "")
+        return source
+    except StickMorphError:
+        obj = context.active_object
+        return obj if obj is not None and obj.type == "MESH" else None
+
+
+def operator_delay_owner(op):
+    """The mesh whose vertex groups an operator's Delay Group names, for
+    its Adjust Last Operation panel: the pair bake's source, the first key,
+    or the rebaked mesh (None when the name is not known yet)."""
+    def text(prop):  # a string property of op, "" if it has none (op.keys() is a method of every op)
+        return getattr(op, prop) if prop in op.bl_rna.properties else ""
+
+    name = text("source") or text("object")
+    if not name and text("keys"):
+        try:
+            keys = json.loads(op.keys)
+            name = keys[0] if isinstance(keys, list) and keys and isinstance(keys[0], str) else ""
+        except ValueError:
+            name = ""
+    obj = bpy.data.objects.get(name) if name else None
+    return obj if obj is not None and obj.type == "MESH" else None
+
+
+def draw_local_timing(layout, data, owner):
+    """The delay group (a search over owner's vertex groups; a text field
+    when there is no owner) and the overlap slider, greyed out where they
+    have no effect (row_active)."""
+    column = layout.column()
+    column.use_property_split = False
+    column.use_property_decorate = False
+    row = column.row()
+    row.active = row_active(data, "delay_group")
+    if owner is not None:
+        row.prop_search(data, "delay_group", owner, "vertex_groups", text="Delay Group", icon="GROUP_VERTEX")
+    else:
+        row.prop(data, "delay_group", text="Delay Group", icon="GROUP_VERTEX")
+    row = column.row()
+    row.active = row_active(data, "overlap")
+    row.prop(data, "overlap", slider=True)
+
+
+def delay_group_problem(owner, name):
+    """What a bake would refuse of the delay group, from the names only (the
+    panel redraws often; the bake also refuses an empty group), or None."""
+    if not name or owner is None:
+        return None
+    if owner.vertex_groups.get(name) is None:
+        return f"'{name}' is not a vertex group of '{owner.name}'"
+    return None
+
+
 def draw_rows(layout, data, split_rows, full_rows, labelled_rows=()):
     column = layout.column()
     column.use_property_split = True
@@ -188,7 +254,7 @@ class VIEW3D_PT_stick_morph(bpy.types.Panel):
         op.source = settings.source.name if settings.source else ""
         op.target = settings.target.name if settings.target else ""
         op.frame_start = settings.frame_start
-        for name in OPTION_NAMES:
+        for name in OPTION_NAMES + MESH_OPTIONS:
             setattr(op, name, getattr(settings, name))
         draw_sequence_buttons(layout.column(align=True), settings)
 
@@ -227,6 +293,34 @@ class VIEW3D_PT_stick_morph_pins(bpy.types.Panel):
         column.operator("object.stick_morph_clear_pins", icon="UNPINNED")
 
 
+class VIEW3D_PT_stick_morph_local_timing(bpy.types.Panel):
+    """Local timing: a vertex group of the source whose weights say which parts lag, and by how much"""
+    bl_label = "Local Timing"
+    bl_idname = "VIEW3D_PT_stick_morph_local_timing"
+    bl_space_type = "VIEW_3D"
+    bl_region_type = "UI"
+    bl_category = "Stick Morph"
+    bl_parent_id = "VIEW3D_PT_stick_morph"
+
+    def draw(self, context):
+        layout = self.layout
+        layout.use_property_decorate = False
+        settings = context.scene.stick_morph
+        owner = delay_group_owner(context, settings)
+        _label_lines(layout, context, f"Groups of '{owner.name}':" if owner is not None else
+                     "Delay Group of the source mesh:")
+        draw_local_timing(layout, settings, owner)
+        problem = delay_group_problem(owner, settings.delay_group)
+        if problem:
+            column = layout.column(align=True)
+            column.alert = True
+            _label_lines(column, context, problem, icon="ERROR")
+        elif settings.delay_group and not row_active(settings, "delay_group"):
+            _label_lines(layout, context, "Local timing needs Motion Rigid", icon="INFO")
+        else:
+            _label_lines(layout, context, "Weight 0 leads, weight 1 lags by Overlap (Weight Paint mode)")
+
+
 class VIEW3D_PT_stick_morph_advanced(bpy.types.Panel):
     """Expert options: how the compatible triangulation and the morph are built"""
     bl_label = "Advanced"
@@ -252,6 +346,8 @@ def draw_operator(layout, op):
     column.prop(op, "source")
     column.prop(op, "target")
     draw_rows(layout, op, MAIN_SPLIT, MAIN_FULL)
+    layout.label(text="Local Timing")
+    draw_local_timing(layout, op, operator_delay_owner(op))
     layout.label(text="Advanced")
     draw_rows(layout, op, ADVANCED_SPLIT, ADVANCED_FULL, ADVANCED_LABELLED)
 
@@ -267,11 +363,11 @@ def draw_sequence_buttons(layout, settings):
     op.frame_step = settings.frame_step
     op.loop = settings.loop
     op.hold = settings.hold
-    for name in SEQUENCE_OPTIONS:
+    for name in SEQUENCE_OPTIONS + MESH_OPTIONS:
         setattr(op, name, getattr(settings, name))
     op = layout.operator("object.stick_morph_rebake_shape_keys", icon="SHAPEKEY_DATA")
     op.hold = settings.hold
-    for name in REBAKE_OPTIONS:
+    for name in REBAKE_OPTIONS + MESH_OPTIONS:
         setattr(op, name, getattr(settings, name))
 
 
@@ -313,12 +409,14 @@ def draw_key_pose_operator(layout, op, fields, toggles, options):
         layout.prop(op, name)
     draw_rows(layout, op, tuple(r for r in MAIN_SPLIT if r[0] in options),
               tuple(r for r in MAIN_FULL if r[0] in options))
+    layout.label(text="Local Timing")
+    draw_local_timing(layout, op, operator_delay_owner(op))
     layout.label(text="Advanced")
     draw_rows(layout, op, ADVANCED_SPLIT, ADVANCED_FULL, ADVANCED_LABELLED)
 
 
-classes = (VIEW3D_PT_stick_morph, VIEW3D_PT_stick_morph_pins, VIEW3D_PT_stick_morph_key_poses,
-           VIEW3D_PT_stick_morph_advanced)
+classes = (VIEW3D_PT_stick_morph, VIEW3D_PT_stick_morph_pins, VIEW3D_PT_stick_morph_local_timing,
+           VIEW3D_PT_stick_morph_key_poses, VIEW3D_PT_stick_morph_advanced)
 
 
 register, unregister = bpy.utils.register_classes_factory(classes)

@@ -32,9 +32,10 @@ def test_bake_settings_have_every_option_with_the_properties_defaults(scene, add
     common = addon_import("common")
     preferences = addon_import("preferences")
     fields = [field.name for field in dataclasses.fields(common.BakeSettings)]
-    # bake_settings reads OPTION_NAMES and frame_start: a field outside them
-    # would silently keep its default in every bake.
-    assert sorted(fields) == sorted(preferences.OPTION_NAMES + ("frame_start",))
+    # bake_settings reads OPTION_NAMES, MESH_OPTIONS (the delay group, issue
+    # 31) and frame_start: a field outside them would silently keep its
+    # default in every bake.
+    assert sorted(fields) == sorted(preferences.OPTION_NAMES + preferences.MESH_OPTIONS + ("frame_start",))
     defaults = common.BakeSettings()
     holders = {
         "operator": bpy.ops.object.stick_morph_bake.get_rna_type().properties,
@@ -43,7 +44,8 @@ def test_bake_settings_have_every_option_with_the_properties_defaults(scene, add
     }
     for where, properties in holders.items():
         for name in fields:
-            if name == "frame_start" and where == "preferences":
+            if name in ("frame_start",) + preferences.MESH_OPTIONS and where == "preferences":
+                assert name not in properties, (where, name)  # no preference: set per bake
                 continue
             expected = getattr(defaults, name)
             got = properties[name].default
@@ -76,7 +78,7 @@ def test_renamed_enum_items_keep_their_order_and_defaults(scene, addon, addon_na
 def test_bake_settings_read_each_option_from_its_property(addon):
     preferences = addon_import("preferences")
     # A distinct value per property: a field read from the wrong one shows.
-    names = preferences.OPTION_NAMES + ("frame_start",)
+    names = preferences.OPTION_NAMES + preferences.MESH_OPTIONS + ("frame_start",)
     holder = type("Holder", (), {name: f"value of {name}" for name in names})()
     settings = preferences.bake_settings(holder)
     assert dataclasses.asdict(settings) == {name: f"value of {name}" for name in names}

@@ -31,9 +31,10 @@ def test_no_setting_is_animatable(scene, addon, addon_name):
 def test_layout_shows_every_option_once_with_short_labels(addon):
     ui = addon_import("ui")
     preferences = addon_import("preferences")
-    rows = ui.MAIN_SPLIT + ui.MAIN_FULL + ui.ADVANCED_SPLIT + ui.ADVANCED_FULL + ui.ADVANCED_LABELLED
+    rows = (ui.MAIN_SPLIT + ui.MAIN_FULL + ui.ADVANCED_SPLIT + ui.ADVANCED_FULL + ui.ADVANCED_LABELLED
+            + ui.LOCAL_TIMING)
     names = [name for name, _ in rows]
-    assert sorted(names) == sorted(("frame_start",) + preferences.OPTION_NAMES)
+    assert sorted(names) == sorted(("frame_start",) + preferences.OPTION_NAMES + preferences.MESH_OPTIONS)
     settings = bpy.types.Scene.bl_rna.properties["stick_morph"].fixed_type.properties
     for name, label in ui.MAIN_SPLIT + ui.ADVANCED_SPLIT:
         text = label or settings[name].name
@@ -41,7 +42,7 @@ def test_layout_shows_every_option_once_with_short_labels(addon):
         # A drop-down's values fit its field too.
         for item in getattr(settings[name], "enum_items", ()):
             assert len(item.name) <= ui.SPLIT_VALUE_CHARS, f"{name}: '{item.name}' is cut at the default width"
-    for name, label in ui.MAIN_FULL + ui.ADVANCED_FULL + ui.ADVANCED_LABELLED:
+    for name, label in ui.MAIN_FULL + ui.ADVANCED_FULL + ui.ADVANCED_LABELLED + ui.LOCAL_TIMING:
         text = label or settings[name].name
         assert len(text) <= ui.FULL_LABEL_CHARS, f"{name}: '{text}'"
     # The expert options are only in Advanced; Motion, the headline option,
@@ -148,6 +149,13 @@ class FakeLayout:
         self.record.append(("prop", name, text, self.use_property_split, self.use_property_decorate))
         self.record.append(("active", name, bool(self.active)))
 
+    def prop_search(self, data, name, search_data, search_name, text=None, **kwargs):
+        # A string property searched in a collection of another datablock
+        # (the delay group among the source's vertex groups).
+        assert search_name in search_data.bl_rna.properties, f"no collection {search_name} on {search_data}"
+        self.record.append(("search", name, search_data.name, search_name))
+        self.prop(data, name, text=text)
+
     def operator(self, idname, **kwargs):
         module, name = idname.split(".")
         rna = getattr(getattr(bpy.ops, module), name).get_rna_type().properties
@@ -222,7 +230,8 @@ def test_redo_panel_and_preferences_draw(scene, addon, addon_name):
     ui.draw_operator(FakeLayout(record), op)
     drawn = [r[1] for r in record if r[0] == "prop"]
     preferences = addon_import("preferences")
-    assert sorted(drawn) == sorted(set(preferences.OPTION_NAMES) | {"source", "target", "frame_start"})
+    assert sorted(drawn) == sorted(set(preferences.OPTION_NAMES + preferences.MESH_OPTIONS)
+                                   | {"source", "target", "frame_start"})
     assert all(not r[4] for r in record if r[0] == "prop")
 
     prefs = bpy.context.preferences.addons[addon_name].preferences
@@ -248,22 +257,28 @@ def test_options_a_motion_does_not_use_are_greyed_out(scene, addon, motion):
     settings = scene.stick_morph
     settings.motion = motion
     settings.renderable = True
-    make_pair("tree")
+    source, _ = make_pair("tree")
+    # A delay group: the overlap then applies wherever local timing does.
+    source.vertex_groups.new(name="lag").add([6], 1.0, "REPLACE")
+    settings.delay_group = "lag"
     active = active_rows(draw(bpy.types.VIEW3D_PT_stick_morph, bpy.context)
+                         + draw(bpy.types.VIEW3D_PT_stick_morph_local_timing, bpy.context)
                          + draw(bpy.types.VIEW3D_PT_stick_morph_advanced, bpy.context))
     greyed = {name for name, on in active.items() if not on}
-    expected = {"RIGID": set(), "BARYCENTRIC": {"rotation", "turns"},
-                "LINEAR": {"rotation", "turns", "steiner", "weights", "enclosure_sides", "show_triangulation"}}
+    timing = {"delay_group", "overlap"}  # issue 31's local timing: Rigid only
+    expected = {"RIGID": set(), "BARYCENTRIC": {"rotation", "turns"} | timing,
+                "LINEAR": {"rotation", "turns", "steiner", "weights", "enclosure_sides", "show_triangulation"}
+                | timing}
     assert greyed == expected[motion]
     # The redo panel greys out the same rows, from the operator's own motion.
     op = bpy.context.window_manager.operator_properties_last("object.stick_morph_bake")
-    saved = op.motion
-    op.motion = motion
+    saved = op.motion, op.delay_group
+    op.motion, op.delay_group = motion, "lag"
     try:
         record = []
         ui.draw_operator(FakeLayout(record), op)
     finally:
-        op.motion = saved
+        op.motion, op.delay_group = saved
     assert {name for name, on in active_rows(record).items() if not on} == expected[motion]
 
 
