@@ -22,6 +22,13 @@ JSON) as four edge meshes wave_pose_1 .. 4 in the collection wave_keys, each wit
 frame (1, 25, 49, 73) for Bake Key Poses, and as one mesh wave_shape_keys whose shape keys
 are animated pose to pose for Rebake Shape Keys. In a folder of its own: the pair samples
 are the *.blend files directly in blend_samples/. `--pairs` with no name writes only it.
+
+And <output-dir>/local_timing/stick_man_lag.blend (unless --no-local-timing), the sample of
+local timing (issue 31): a stick man waving, the hand lagging the arm. Two edge meshes,
+lag_source and lag_target (LAG_POSES: the body bends a little, the raised forearm and the
+hand turn about the elbow); the source has the vertex group `lag` (the wrist and the
+fingertip at weight 1, every other vertex 0), and the scene's Stick Morph settings name the
+pair, the group and an overlap of 0.3.
 """
 
 import argparse
@@ -56,6 +63,8 @@ def parse_args():
                         help="pairs to build (default: all five)")
     parser.add_argument("--key-poses", action=argparse.BooleanOptionalAction, default=True,
                         help="also write key_poses/stick_man_wave.blend (default: yes)")
+    parser.add_argument("--local-timing", action=argparse.BooleanOptionalAction, default=True,
+                        help="also write local_timing/stick_man_lag.blend (default: yes)")
     return parser.parse_args(argv)
 
 
@@ -175,16 +184,17 @@ WAVE_NAME = "stick_man_wave"
 WAVE_STEP = 24  # frames from one pose to the next
 
 
-def stick_man(root, heading, bends):
-    """The 11 (x, y) vertices of the stick man with these bends (degrees)."""
+def stick_man(root, heading, bends, parent=STICK_MAN_PARENT, reference=STICK_MAN_REFERENCE,
+              lengths=STICK_MAN_LENGTHS):
+    """The (x, y) vertices of the stick man (11 by default) with these bends
+    (degrees); parent, reference and lengths describe its edges."""
     points = [tuple(root)]
     direction = [0.0] * len(bends)
     for i, bend in enumerate(bends):
-        reference = STICK_MAN_REFERENCE[i]
-        direction[i] = (heading if reference < 0 else direction[reference]) + bend
-        x, y = points[STICK_MAN_PARENT[i]]
+        direction[i] = (heading if reference[i] < 0 else direction[reference[i]]) + bend
+        x, y = points[parent[i]]
         angle = math.radians(direction[i])
-        points.append((x + STICK_MAN_LENGTHS[i] * math.cos(angle), y + STICK_MAN_LENGTHS[i] * math.sin(angle)))
+        points.append((x + lengths[i] * math.cos(angle), y + lengths[i] * math.sin(angle)))
     return points
 
 
@@ -252,6 +262,78 @@ def build_key_poses_scene():
     return scene
 
 
+# ---------------------------------------------------------- local timing ----
+# Issue 31: the stick man with a hand, vertex 11 on the right wrist (vertex
+# 6), edge 10 bent from the forearm (edge 5). From the source to the target
+# the body bends a little (the legs stay where they are) and the raised
+# forearm and the hand turn about the elbow (vertex 5), waving: 75 and 95
+# degrees clockwise. The vertex group LAG_GROUP weighs the wrist and the
+# fingertip 1 (every other vertex 0), so with local timing the hand lags.
+LAG_PARENT = STICK_MAN_PARENT + (6,)
+LAG_REFERENCE = STICK_MAN_REFERENCE + (5,)
+LAG_LENGTHS = STICK_MAN_LENGTHS + (0.5,)
+LAG_EDGES = tuple((parent, i + 1) for i, parent in enumerate(LAG_PARENT))
+LAG_POSES = (
+    ((0.0, 0.0), 90, (0, 0, 120, -30, -50, 50, 160, 10, -160, -10, 0)),
+    ((0.0, 0.0), 80, (0, 6, 124, -26, -40, -25, 170, 8, -150, -12, -20)),
+)
+LAG_GROUP = "lag"
+LAG_VERTICES = (6, 11)  # the wrist and the fingertip: weight 1
+LAG_OVERLAP = 0.3
+LOCAL_TIMING_DIR = "local_timing"
+LAG_NAME = "stick_man_lag"
+LAG_FRAMES = 48
+
+
+def lag_poses():
+    """The source and the target of the local-timing sample, each a list of
+    12 (x, y) vertices; the edges are LAG_EDGES."""
+    return [stick_man(root, heading, bends, LAG_PARENT, LAG_REFERENCE, LAG_LENGTHS)
+            for root, heading, bends in LAG_POSES]
+
+
+def build_local_timing_scene():
+    """lag_source and lag_target side by side, the source with the vertex
+    group LAG_GROUP, and the scene's Stick Morph settings (stored as the ID
+    properties the add-on's scene settings read when it is enabled) naming
+    the pair, the delay group, the overlap and the frames."""
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    scene = bpy.context.scene
+    scene.name = LAG_NAME
+    objects = []
+    for name, pose, x in zip(("lag_source", "lag_target"), lag_poses(), (0.0, 5.0)):
+        mesh = bpy.data.meshes.new(name)
+        mesh.from_pydata([(px, py, 0.0) for px, py in pose], list(LAG_EDGES), [])
+        mesh.update()
+        obj = bpy.data.objects.new(name, mesh)
+        obj.location = (x, 0.0, 0.0)
+        scene.collection.objects.link(obj)
+        objects.append(obj)
+    source, target = objects
+    source.vertex_groups.new(name=LAG_GROUP).add(list(LAG_VERTICES), 1.0, "REPLACE")
+    # The add-on's scene settings (preferences.StickMorphSceneSettings):
+    # Source, Target, Delay Group, Overlap, Frames.
+    scene["stick_morph"] = {"source": source, "target": target, "delay_group": LAG_GROUP,
+                            "overlap": LAG_OVERLAP, "frame_count": LAG_FRAMES}
+    for obj in bpy.context.view_layer.objects:
+        obj.select_set(obj in objects)
+    bpy.context.view_layer.objects.active = target
+
+    camera_data = bpy.data.cameras.new(f"{LAG_NAME}_camera")
+    camera_data.type = "ORTHO"
+    camera_data.ortho_scale = 17.0  # both figures' 8.4 units of height, with a margin, at 16:9
+    camera = bpy.data.objects.new(camera_data.name, camera_data)
+    camera.location = (2.9, 1.25, 20.0)
+    scene.collection.objects.link(camera)
+    scene.camera = camera
+    render = scene.render
+    render.engine = "BLENDER_WORKBENCH"
+    render.resolution_x, render.resolution_y = RESOLUTION
+    scene.frame_start, scene.frame_end = 1, LAG_FRAMES
+    scene.frame_set(1)
+    return scene
+
+
 def main():
     args = parse_args()
     os.makedirs(args.output_dir, exist_ok=True)
@@ -261,6 +343,14 @@ def main():
         folder = os.path.join(args.output_dir, KEY_POSES_DIR)
         os.makedirs(folder, exist_ok=True)
         path = os.path.abspath(os.path.join(folder, f"{WAVE_NAME}.blend"))
+        bpy.ops.wm.save_as_mainfile(filepath=path, compress=True)
+        print(f"wrote {path} ({os.path.getsize(path)} bytes)")
+    if args.local_timing:
+        build_local_timing_scene()
+        bpy.context.preferences.filepaths.save_version = 0
+        folder = os.path.join(args.output_dir, LOCAL_TIMING_DIR)
+        os.makedirs(folder, exist_ok=True)
+        path = os.path.abspath(os.path.join(folder, f"{LAG_NAME}.blend"))
         bpy.ops.wm.save_as_mainfile(filepath=path, compress=True)
         print(f"wrote {path} ({os.path.getsize(path)} bytes)")
     for pair in args.pairs:
