@@ -41,7 +41,8 @@ and measures each run:
 
 It prints one row per pair and a summary per overlap (median and extreme |lag - d|, pairs within
 0.1, bad frames, exactness), and writes everything to --json (the local_timing.json that
-bench/make_benchmarks.py reads), with a few pairs' frames for the report's filmstrips. Exits 0
+bench/make_benchmarks.py reads), with a few pairs' frames for the report's filmstrips (two small
+pairs and the small pair whose lag misses the largest d by most, if one does). Exits 0
 when it measured (whatever it found), 2 for a bad command line or corpus.
 """
 import argparse
@@ -395,14 +396,28 @@ def pick_filmstrips(entries, names, count=2):
     """The pairs whose frames go to the report: those named, else the first small humanoid (or
     stick man) and the first small quadruped (or lizard, or tree)."""
     if names:
-        return set(names)
+        return list(names)
     chosen = []
     for kinds in (("humanoid", "stickman"), ("quadruped", "lizard", "tree")):
         for e in entries:
             if e["kind"] in kinds and e["vertices"] <= FILMSTRIP_MAX_VERTICES and e["name"] not in chosen:
                 chosen.append(e["name"])
                 break
-    return set(chosen[:count])
+    return chosen[:count]
+
+
+def worst_miss(pairs, overlaps):
+    """The small pair whose lag misses the largest overlap by most (more than the tolerance), or
+    None: its filmstrip shows the report where the morph gave way."""
+    if not overlaps:
+        return None
+    label = overlap_label(max(overlaps))
+    worst, name = TOLERANCE, None
+    for p in pairs:
+        r = p["runs"].get(label) or {}
+        if p["vertices"] <= FILMSTRIP_MAX_VERTICES and r.get("lag") is not None and abs(r["lag"] - float(label)) > worst:
+            worst, name = abs(r["lag"] - float(label)), p["name"]
+    return name
 
 
 def build_source(build_dir):
@@ -430,7 +445,8 @@ def main(argv=None):
     ap.add_argument("--json", type=pathlib.Path, help="write the results here")
     ap.add_argument("--no-exact-check", action="store_true",
                     help="skip the independent exact check of every frame (the CLI still verifies them)")
-    ap.add_argument("--filmstrips", default="", help="pairs whose frames the JSON keeps (default: two small ones)")
+    ap.add_argument("--filmstrips", default="",
+                    help="pairs whose frames the JSON keeps (default: two small ones and the worst small miss)")
     ap.add_argument("--only", action="append", help="measure only this pair (repeatable)")
     args = ap.parse_args(argv)
     cli = args.build_dir / "stickmorph"
@@ -455,12 +471,20 @@ def main(argv=None):
     started = time.monotonic()
     with tempfile.TemporaryDirectory(prefix="local_timing_") as tmp:
         for entry in entries:
-            pair = measure_pair(cli, args.corpus, entry, overlaps, args.frames, not args.no_exact_check,
-                                entry["name"] in strips, tmp)
+            keep = entry["name"] in strips or (not args.filmstrips and entry["vertices"] <= FILMSTRIP_MAX_VERTICES)
+            pair = measure_pair(cli, args.corpus, entry, overlaps, args.frames, not args.no_exact_check, keep, tmp)
             pairs.append(pair)
             print(f"{entry['name']}: " + ", ".join(
                 f"{k} " + ("FAILED" if "error" in r else f"lag {fmt(r.get('lag'))}") for k, r in pair["runs"].items()),
                 file=sys.stderr)
+    # Frames are kept for the pairs picked and, unless pairs were named, for the worst miss too.
+    miss = None if args.filmstrips else worst_miss(pairs, overlaps)
+    for p in pairs:
+        if p.get("filmstrip") and p["name"] not in strips and p["name"] != miss:
+            del p["filmstrip"]
+        elif p.get("filmstrip"):
+            p["filmstrip"]["why"] = "picked" if p["name"] in strips else "worst miss"
+    pairs_order = {name: i for i, name in enumerate(strips + ([miss] if miss else []))}
     summary = summarize(pairs, overlaps)
     print_report(pairs, summary, overlaps)
     if args.json:
@@ -469,7 +493,8 @@ def main(argv=None):
                "corpus": str(args.corpus), "seed": manifest.get("seed"), "frames": args.frames,
                "overlaps": overlaps, "tolerance": TOLERANCE, "min_turn_deg": MIN_TURN_DEG,
                "timing_in_help": "--timing" in help_text, "exact_check": not args.no_exact_check,
-               "seconds": round(time.monotonic() - started, 1), "summary": summary, "pairs": pairs}
+               "seconds": round(time.monotonic() - started, 1), "summary": summary, "pairs": pairs,
+               "filmstrips": sorted((p["name"] for p in pairs if p.get("filmstrip")), key=pairs_order.get)}
         args.json.parent.mkdir(parents=True, exist_ok=True)
         args.json.write_text(json.dumps(doc, indent=1) + "\n")
     return 0

@@ -30,11 +30,14 @@ Half the figures are drawn mirrored. A pair is kept when, at the level of bones,
 target keep non-adjacent bones apart by 3% of the figure's size and adjacent bones 12 degrees
 apart, every limb bone turns by 30 degrees or more, at least three other bones by 8 or more,
 the morph's own path (joint angles at constant speed) stays clear, and `stickmorph check` says
-the subdivided pair is compatible. The path delayed as issue 31 asks (the limb's bones
-following their turn at local time (t - d) / (1 - d), the others at t / (1 - d)) is simulated
-too for every overlap d: on four pairs of five it must stay clear, the fifth is drawn without
-that condition (its manifest entry says whether it is clear), so the corpus also holds pairs
-where the delayed motion runs into the body and the morph must give way.
+the subdivided pair is compatible. The path delayed as issue 31 asks is simulated too for every
+overlap d, on the subdivided figure: every edge turning at constant speed at the local time of
+its ends (their mean where they differ), clamp((t - d w) / (1 - d), 0, 1), each of its 25
+frames checked exactly (bench/multipart_check.py's Topology: a plane graph with the source's
+rotation system). The plain path (d = 0) must be valid; on four pairs of five the delayed ones
+must be too, the fifth is drawn without that condition (its manifest entry says whether they
+are), so the corpus may also hold pairs where the delayed motion runs into the body and the morph
+must give way.
 
 Files: NAME.source.json, NAME.target.json (docs/FORMAT.md figures), NAME.timing_D.json for every
 overlap D (`{"delay": [...], "overlap": D}`: weight 1 on the limb's vertices, 0 elsewhere, the
@@ -59,6 +62,7 @@ import numpy as np
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import correspondence_check as cc  # noqa: E402  (the exact plane-graph test)
+import multipart_check as topo  # noqa: E402  (the exact test of a frame against the source)
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
 MAX_ATTEMPTS = 400  # drawings per pair; a drawing is cheap until the CLI check
@@ -365,20 +369,21 @@ def draw_pair(kind, rng, require_delayed, overlaps, limb_index):
             return None  # the plain morph's own path must be clear
         delayed_clear[d] = ok
     if require_delayed and not all(delayed_clear.values()):
-        return None
+        return None  # the quick test at the level of bones; the figure's own path is checked later
     return {"skel": skel, "limb_name": limb_name, "src": src, "tgt": tgt, "segs": segs, "owner": owner,
-            "turn": turn, "bend": bend, "root_turn": root_turn, "delayed_clear": delayed_clear}
+            "turn": turn, "bend": bend, "root_turn": root_turn, "bones_clear": delayed_clear,
+            "turns": {b: abs_t[b] - abs_s[b] for b in abs_s}}
 
 
 def subdivide(drawn, pieces, ring_pieces):
     """The figure file's vertices and edges: every bone split into `pieces` straight pieces
-    (ring sides into `ring_pieces`); per vertex its weight (1 on the limb, the junction 0) and
-    the limb's edges."""
+    (ring sides into `ring_pieces`); per vertex its weight (1 on the limb, the junction 0), the
+    limb's edges and per edge its bone."""
     skel, src, tgt, segs, owner = drawn["skel"], drawn["src"], drawn["tgt"], drawn["segs"], drawn["owner"]
     n0 = len(src)
     weight = [1 if owner[v] in skel.limb else 0 for v in range(n0)]
     p_src, p_tgt = [tuple(p) for p in src], [tuple(p) for p in tgt]
-    edges, limb_edges = [], []
+    edges, limb_edges, edge_bone = [], [], []
     for u, v, name, is_ring in segs:
         k = ring_pieces if is_ring else pieces
         chain = [u]
@@ -393,7 +398,40 @@ def subdivide(drawn, pieces, ring_pieces):
             if name in skel.limb:
                 limb_edges.append(len(edges))
             edges.append((a, b))
-    return np.array(p_src), np.array(p_tgt), edges, weight, limb_edges
+            edge_bone.append(name)
+    return np.array(p_src), np.array(p_tgt), edges, weight, limb_edges, edge_bone
+
+
+def figure_path(src, tgt, edges, turns, weights, overlap, samples=PATH_SAMPLES):
+    """Frames of the figure itself moving as issue 31 asks with a joint-angle morph: every edge
+    turns at constant speed by `turns` (radians) at the local time of its ends (their mean where
+    they differ), its length linear in that time, the vertices fitted to the edge vectors (exact
+    for a tree; rings stay rigid), the centroid on a straight line."""
+    e = np.asarray(edges, dtype=int)
+    v0, v1 = src[e[:, 1]] - src[e[:, 0]], tgt[e[:, 1]] - tgt[e[:, 0]]
+    a0 = np.arctan2(v0[:, 1], v0[:, 0])
+    l0, l1 = np.linalg.norm(v0, axis=1), np.linalg.norm(v1, axis=1)
+    n, count = len(src), len(e)
+    incidence = np.zeros((count + 1, n))
+    incidence[np.arange(count), e[:, 1]] = 1.0
+    incidence[np.arange(count), e[:, 0]] = -1.0
+    incidence[count, :] = 1.0 / n
+    solve = np.linalg.pinv(incidence)
+    w = np.asarray(weights, dtype=float)
+    frames = []
+    for t in np.linspace(0.0, 1.0, samples):
+        tau = np.clip((t - overlap * w) / (1.0 - overlap), 0.0, 1.0)
+        tau_e = (tau[e[:, 0]] + tau[e[:, 1]]) / 2
+        a, r = a0 + turns * tau_e, l0 + (l1 - l0) * tau_e
+        centroid = (1 - t) * src.mean(axis=0) + t * tgt.mean(axis=0)
+        frames.append(solve @ np.vstack([np.stack([r * np.cos(a), r * np.sin(a)], axis=1), centroid]))
+    return frames
+
+
+def path_valid(topology, frames):
+    """Whether every frame is a drawing of the figure with the source's rotation system, checked
+    exactly (bench/multipart_check.py's Topology)."""
+    return all(not topology.frame_problems(f, limit=1) for f in frames)
 
 
 def write_figure(path, name, points, edges):
@@ -437,9 +475,18 @@ def make_pair(kind, rng, require_delayed, overlaps, target_vertices, limb_index)
         if pieces * limb_bones < 3:
             pieces = 2  # the limb needs 3 edges or more: its junction edge lags by d/2 only
         ring_pieces = max(1, pieces // 2)
-        src, tgt, edges, weight, limb_edges = subdivide(drawn, pieces, ring_pieces)
+        src, tgt, edges, weight, limb_edges, edge_bone = subdivide(drawn, pieces, ring_pieces)
         if cc.plane_problems(src, edges, limit=1) or cc.plane_problems(tgt, edges, limit=1):
             continue
+        # The figure's own path, exactly: the plain one must be valid; the delayed ones on the pairs
+        # that ask for it (and recorded on all).
+        turns = np.radians([drawn["turns"][b] for b in edge_bone]) * (-1.0 if mirrored else 1.0)
+        topology = topo.Topology(src, edges)
+        clear = {d: path_valid(topology, figure_path(src, tgt, edges, turns, weight, d))
+                 for d in sorted(set([0.0] + list(overlaps)))}
+        if not clear[0.0] or (require_delayed and not all(clear.values())):
+            continue
+        drawn["delayed_clear"] = clear
         return drawn, mirrored, pieces, src, tgt, edges, weight, limb_edges, attempt + 1
     return None
 

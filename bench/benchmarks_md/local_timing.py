@@ -150,6 +150,9 @@ def _filmstrip_svg(path, pair, labels):
                 strip_axes.text(i * step_x, y0 - 0.62 * height, f"t = {t:.2f}", ha="center", va="top", fontsize=7,
                                 color="#555")
         name = "no timing" if label == "plain" else f"d = {label}"
+        measured = (pair["runs"].get(label) or {}).get("lag")
+        if measured is not None:
+            name += f"\nlag {_num(measured, '.2f')}"
         strip_axes.text(-0.62 * step_x, y0, name, ha="right", va="center", fontsize=8)
     strip_axes.set_title(f"{pair['name']} ({pair['vertices']} vertices): the limb ({pair.get('limb')}, orange) "
                          f"turns {pair.get('turn_deg', 0):+.0f}° about its junction while the body bends", fontsize=9)
@@ -251,11 +254,14 @@ def local_timing_section(doc, out_path, plot_dir):
     if any(p["runs"].get(x, {}).get("lag") is not None for p in pairs for x in overlaps):
         _lag_svg(os.path.join(plot_dir, "local_timing_lag.svg"), doc, labels)
         md.append(f"\n![Measured lag against the overlap asked]({plot_rel}/local_timing_lag.svg)\n")
-    strips = [p for p in pairs if p.get("filmstrip")]
-    for i, pair in enumerate(strips[:2], 1):
+    by_name = {p["name"]: p for p in pairs if p.get("filmstrip")}
+    strips = [by_name[n] for n in doc.get("filmstrips", []) if n in by_name] or list(by_name.values())
+    for i, pair in enumerate(strips[:3], 1):
         name = f"local_timing_filmstrip_{i}.svg"
         _filmstrip_svg(os.path.join(plot_dir, name), pair, labels)
-        md.append(f"\n![{pair['name']}: filmstrip without and with the limb delayed]({plot_rel}/{name})\n")
+        what = ("the pair whose lag misses the largest d by most" if pair["filmstrip"].get("why") == "worst miss"
+                else "filmstrip without and with the limb delayed")
+        md.append(f"\n![{pair['name']}: {what}]({plot_rel}/{name})\n")
     if strips:
         md.append("Each filmstrip: evenly spaced frames (each centred), the limb in orange, one row per timing; "
                   "below, the median share of its turn the limb's edges (orange) and the other edges (blue) have "
