@@ -323,7 +323,8 @@ def summarize(pairs, overlaps):
              "first_last_exact": sum(1 for _, r in done if r["first_exact"] and r["last_exact"]),
              "misses": [{"name": p["name"], "lag": r["lag"], "limb": p.get("limb"),
                          "reference_lag": r.get("reference_lag"),
-                         "reference_valid": (not r["reference_bad_frames"]) if "reference_bad_frames" in r else None}
+                         "reference_valid": (not r["reference_bad_frames"]) if "reference_bad_frames" in r else None,
+                         "guide_frames": r.get("guide_frames")}
                         for p, r in done if r.get("lag") is not None and abs(r["lag"] - d) > TOLERANCE]}
         if label != "plain":
             s["same_as_plain"] = sum(1 for _, r in done if r.get("same_as_plain"))
@@ -386,8 +387,10 @@ def print_report(pairs, summary, overlaps, stream=sys.stdout):
         print(line, file=stream)
         for m in s["misses"] if label not in ("plain", "0") else []:
             valid = {True: "valid", False: "INVALID", None: "not checked"}[m["reference_valid"]]
+            guide = m.get("guide_frames") or {}
             print(f"    misses: {m['name']} (limb {m['limb']}): lag {m['lag']:.3f}; the reference: lag "
-                  f"{fmt(m['reference_lag'])}, {valid}", file=stream)
+                  f"{fmt(m['reference_lag'])}, {valid}; the morph's interior frames: {guide.get('exact', '?')} on its "
+                  f"guide, {guide.get('blended', '?')} blended", file=stream)
         for f in s["failures"]:
             print(f"    failed: {f}", file=stream)
 

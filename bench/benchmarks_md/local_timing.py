@@ -221,8 +221,8 @@ def local_timing_section(doc, out_path, plot_dir):
             clear_notes.append(f"d = {label}: within {TOLERANCE} on {s['clear_within']}/{s['clear_pairs']} of the "
                                "pairs whose delayed path the corpus found clear")
     if clear_notes:
-        md.append("\nThe corpus simulates the delayed motion at the level of bones and draws one pair in five without "
-                  "asking it to stay clear of the body; " + "; ".join(clear_notes) + ".")
+        md.append("\nThe corpus makes the delayed motion of each figure itself (every edge at its local time) and checks "
+                  "it exactly; one pair in five is drawn without asking it to be valid; " + "; ".join(clear_notes) + ".")
     md.append("\nPer kind of figure, the lag's median and the pairs within " + f"{TOLERANCE}:\n")
     md.append(table(["kind", "pairs", "vertices"] + [("lag, no timing" if x == "plain" else f"lag, d = {x}")
                                                      for x in labels], _kind_rows(doc, labels),
@@ -234,16 +234,19 @@ def local_timing_section(doc, out_path, plot_dir):
                   "plain run's frames (every edge's direction and length those of the plain morph at the edge's local "
                   "time, the vertices fitted to those edge vectors), measured and checked the same way: " + "; ".join(
                       f"d = {label}: lag median {_num(s['reference_lag_median'])}, within {TOLERANCE} on "
-                      f"{s['reference_within']}/{s['reference_measured']}, {s['reference_bad_frames']} invalid frames "
-                      f"(in {s['reference_pairs_with_bad_frames']} pairs)" for label, s in references)
+                      f"{s['reference_within']}/{s['reference_measured']}, invalid frames {s['reference_bad_frames']} "
+                      f"(in {s['reference_pairs_with_bad_frames']} of the pairs)" for label, s in references)
                   + ". Where the engine's lag falls short of d and the reference is valid in every frame, the morph "
                   "gave way where the figure itself did not need it.")
     misses = [(label, m) for label in overlaps for m in doc["summary"].get(label, {}).get("misses", [])]
     if misses:
         def reference(m):
+            guide = m.get("guide_frames") or {}
+            text = (f"; {guide['blended']} of its {sum(guide.values())} interior frames blended, off the rigid guide"
+                    if guide.get("blended") is not None else "")
             if m.get("reference_valid") is None:
-                return ""
-            return "; the reference valid" if m["reference_valid"] else "; the reference has invalid frames"
+                return text
+            return text + ("; the reference valid" if m["reference_valid"] else "; the reference has invalid frames")
         md.append("\nPairs where the lag misses d by more than " + f"{TOLERANCE}: " + "; ".join(
             f"{m['name']} (limb {m.get('limb')}, d = {label}: lag {m['lag']:.3f}{reference(m)})"
             for label, m in misses) + ".")
