@@ -94,7 +94,7 @@ def test_a_pair_bake_cancelled_while_triangulating_changes_nothing(scene):
     stages_before = scene.stick_morph.last_stages
 
     op = StandIn(operators.STICKMORPH_OT_bake, source="Source", target="Target", frame_start=1,
-                 **options(scene, properties.OPTION_NAMES))
+                 **options(scene, properties.OPTION_NAMES + properties.MESH_OPTIONS))
     timer = addon_import("bake_job").StageTimer()
     work = op.start(bpy.context, timer)
     job, seconds = cancelled_job(work, timer)
@@ -118,7 +118,7 @@ def test_a_key_pose_bake_cancelled_while_triangulating_changes_nothing(scene):
 
     op = StandIn(sequence_operators.STICKMORPH_OT_bake_sequence, keys=json.dumps([k.name for k in keys]),
                  collection="", frame_start=1, frame_step=24, loop=False, hold=False,
-                 **options(scene, properties.SEQUENCE_OPTIONS))
+                 **options(scene, properties.SEQUENCE_OPTIONS + properties.MESH_OPTIONS))
     timer = addon_import("bake_job").StageTimer()
     work = op.start(bpy.context, timer)
     job, seconds = cancelled_job(work, timer)
@@ -153,7 +153,7 @@ def test_a_modal_bake_not_cancelled_builds_what_execute_builds(scene):
     bpy.data.objects.remove(by_execute)
 
     op = StandIn(operators.STICKMORPH_OT_bake, source="Source", target="Target", frame_start=1,
-                 **options(scene, properties.OPTION_NAMES))
+                 **options(scene, properties.OPTION_NAMES + properties.MESH_OPTIONS))
     timer = bake_job.StageTimer()
     work = op.start(bpy.context, timer)
     job = bake_job.BakeJob(work, engine.Progress(), timer).start()
