@@ -4,6 +4,8 @@ delayed limb against the overlap asked, with a scatter of every pair and filmstr
 import json
 import os
 
+from matplotlib.collections import LineCollection
+
 from .common import COLORS, InputError, plt, table
 from .common import optional_number as _optional_number
 
@@ -135,16 +137,18 @@ def _filmstrip_svg(path, pair, labels):
     strip_axes = figure.add_axes([0.7 / 8.0, (fig_h - top - strip_h) / fig_h, strip_w / 8.0, strip_h / fig_h])
     strip_axes.set_aspect("equal")
     strip_axes.axis("off")
+    strip_axes.set_xlim(-0.6 * step_x, (count - 0.4) * step_x)
+    strip_axes.set_ylim(-(len(rows) - 0.4) * step_y, 0.6 * step_y)
     for r, label in enumerate(rows):
         y0 = -r * step_y
         for i, points in enumerate(strip["rows"][label]):
             cx = (max(p[0] for p in points) + min(p[0] for p in points)) / 2
             cy = (max(p[1] for p in points) + min(p[1] for p in points)) / 2
             dx = i * step_x - cx
-            for k, (a, b) in enumerate(edges):
-                axes_color = LIMB_COLOR if k in limb else BODY_COLOR
-                strip_axes.plot([points[a][0] + dx, points[b][0] + dx], [points[a][1] - cy + y0, points[b][1] - cy + y0],
-                                color=axes_color, linewidth=1.4 if k in limb else 0.9, solid_capstyle="round")
+            for in_limb, color, width in ((False, BODY_COLOR, 0.9), (True, LIMB_COLOR, 1.4)):
+                segments = [[(points[a][0] + dx, points[a][1] - cy + y0), (points[b][0] + dx, points[b][1] - cy + y0)]
+                            for k, (a, b) in enumerate(edges) if (k in limb) == in_limb]
+                strip_axes.add_collection(LineCollection(segments, colors=color, linewidths=width, capstyle="round"))
             if r == len(rows) - 1:
                 t = strip["frame_indices"][i] / max(1, strip["frames"] - 1)
                 strip_axes.text(i * step_x, y0 - 0.62 * height, f"t = {t:.2f}", ha="center", va="top", fontsize=7,
