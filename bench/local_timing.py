@@ -340,6 +340,7 @@ def summarize(pairs, overlaps):
             s["reference_within"] = sum(1 for x in reference if abs(x - d) <= TOLERANCE)
             s["reference_bad_frames"] = sum(len(r.get("reference_bad_frames", [])) for _, r in done)
             s["reference_pairs_with_bad_frames"] = sum(1 for _, r in done if r.get("reference_bad_frames"))
+            s["reference_checked"] = sum(1 for _, r in done if "reference_bad_frames" in r)
         out[label] = s
     return out
 
@@ -383,7 +384,8 @@ def print_report(pairs, summary, overlaps, stream=sys.stdout):
         if "reference_measured" in s:
             line += (f"; reference (issue 31's delayed motion from the plain frames): lag median "
                      f"{fmt(s['reference_lag_median'])}, within {s['reference_within']}/{s['reference_measured']}, "
-                     f"invalid frames {s['reference_bad_frames']} (in {s['reference_pairs_with_bad_frames']} pairs)")
+                     + (f"invalid frames {s['reference_bad_frames']} (in {s['reference_pairs_with_bad_frames']} pairs)"
+                        if s["reference_checked"] else "frames not checked"))
         print(line, file=stream)
         for m in s["misses"] if label not in ("plain", "0") else []:
             valid = {True: "valid", False: "INVALID", None: "not checked"}[m["reference_valid"]]

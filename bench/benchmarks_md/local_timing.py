@@ -238,8 +238,10 @@ def local_timing_section(doc, out_path, plot_dir):
                   "plain run's frames (every edge's direction and length those of the plain morph at the edge's local "
                   "time, the vertices fitted to those edge vectors), measured and checked the same way: " + "; ".join(
                       f"d = {label}: lag median {_num(s['reference_lag_median'])}, within {TOLERANCE} on "
-                      f"{s['reference_within']}/{s['reference_measured']}, invalid frames {s['reference_bad_frames']} "
-                      f"(in {s['reference_pairs_with_bad_frames']} of the pairs)" for label, s in references)
+                      f"{s['reference_within']}/{s['reference_measured']}, "
+                      + (f"invalid frames {s['reference_bad_frames']} (in {s['reference_pairs_with_bad_frames']} of the "
+                         "pairs)" if s.get("reference_checked", 1) else "its frames not checked")
+                      for label, s in references)
                   + ". Where the engine's lag falls short of d and the reference is valid in every frame, the morph "
                   "gave way where the figure itself did not need it.")
     misses = [(label, m) for label in overlaps for m in doc["summary"].get(label, {}).get("misses", [])]
