@@ -12,6 +12,7 @@ loader, its tree pair and its tilted plane are reused); the Blender side
 unchanged) is tests/blender/test_timing.py.
 """
 import dataclasses
+import functools
 
 import numpy as np
 import pytest
@@ -21,11 +22,6 @@ from test_addon_core import (SOURCE_WORLD, TARGET_WORLD, TREE_EDGES, TREE_SOURCE
 
 morph_module = load_addon_module("morph")
 sequence = load_addon_module("sequence")
-
-
-def engine_has_local_timing():
-    engine = core.load_engine()
-    return "delay" in engine.option_rules and sequence.supports_local_timing(engine)
 
 
 # ------------------------------------------------------- delay weights ----
@@ -185,8 +181,14 @@ def test_key_poses_refuse_weights_of_the_wrong_length_and_an_old_module(monkeypa
 
 # ---------------------------------------------------------- with the engine ----
 
-needs_engine = pytest.mark.skipif(not engine_has_local_timing(),
-                                  reason="the built stickmorph module has no delay= / overlap= yet")
+def test_the_engine_has_local_timing():
+    # The module built with this add-on: its rule for delay= (and overlap=,
+    # given with it) is rigid only, and morph_key_poses takes both.
+    engine = core.load_engine()
+    assert core.option_methods()["delay"] == ("rigid",)
+    assert sequence.supports_local_timing(engine)
+    with pytest.raises(engine.InvalidArgumentError, match=r"delay\[1\] is 1.5, outside \[0, 1\]"):
+        engine.morph(TREE_SOURCE[:2], TREE_TARGET[:2], [[0, 1]], delay=[0.0, 1.5], overlap=0.3)
 
 
 def edge_angles(frames_xy, edges):
@@ -203,7 +205,6 @@ def half_turn_time(angles, times):
     return times[k - 1] + (0.5 - a) / (b - a) * (times[k] - times[k - 1])
 
 
-@needs_engine
 def test_the_engine_gets_the_weights_and_the_overlap_with_rigid_only(monkeypatch):
     engine = core.load_engine()
     calls = []
@@ -225,14 +226,13 @@ def test_the_engine_gets_the_weights_and_the_overlap_with_rigid_only(monkeypatch
     assert core.local_timing_summary(core.compute_morph(prepare(), settings), "") == ""
 
 
-@needs_engine
 def test_the_lagging_arm_turns_later_and_its_heights_follow_its_clock():
     prepared = core.prepare_pair(SOURCE_WORLD, TREE_EDGES, 0, "Arm", TARGET_WORLD, TREE_EDGES, 0, "Arm pose",
                                  core.BakeSettings(), source_delay=LAG)
     d, count = 0.3, 41
     settings = core.BakeSettings(frame_count=count, delay_group="lag", overlap=d)
     lagged = core.compute_morph(prepared, settings)
-    plain = core.compute_morph(prepared, dataclasses.replace(settings, delay_group=""))
+    plain = core.compute_morph(prepare(), dataclasses.replace(settings, delay_group=""))
     size = prepared.size
     # The ends are the meshes.
     assert np.abs(lagged.frames_world[0] - SOURCE_WORLD).max() <= 1e-9 * size
@@ -240,25 +240,39 @@ def test_the_lagging_arm_turns_later_and_its_heights_follow_its_clock():
     times = np.linspace(0.0, 1.0, count)
     xy = np.array([core.project(frame, prepared.plane)[0] for frame in lagged.frames_world])
     angles = edge_angles(xy, TREE_EDGES)
+    # The leading arm's edges (weight 0) turn half way at (1 - d) / 2, the
+    # lagging arm's outer edge (weight 1) at (1 + d) / 2: d later. In the
+    # plain morph both at the middle.
     leading, lagging = half_turn_time(angles[:, 1], times), half_turn_time(angles[:, 5], times)
-    assert lagging - leading == pytest.approx(d, abs=0.4 * d)
+    assert leading == pytest.approx((1 - d) / 2, abs=0.02) and lagging == pytest.approx((1 + d) / 2, abs=0.02)
+    plain_xy = np.array([core.project(frame, prepared.plane)[0] for frame in plain.frames_world])
+    plain_angles = edge_angles(plain_xy, TREE_EDGES)
+    assert half_turn_time(plain_angles[:, 1], times) == pytest.approx(0.5, abs=0.02)
+    assert half_turn_time(plain_angles[:, 5], times) == pytest.approx(0.5, abs=0.02)
     # Each vertex's height above the source's plane on its own clock.
     heights = (lagged.frames_world - prepared.plane.origin) @ prepared.plane.normal
     expected = prepared.source_h + core.local_times(times, LAG, d) * (prepared.target_h - prepared.source_h)
     assert np.abs(heights - expected).max() <= 1e-9 * size
-    assert heights[count // 2, 6] < heights[count // 2, 2] - 0.05  # the target's plane is 0.7 further
+    # Half way, the lagging hand is nearer the source's plane than the
+    # leading arm (the target's plane is 0.7 further).
+    progress = (heights[count // 2] - prepared.source_h) / (prepared.target_h - prepared.source_h)
+    assert progress[6] < progress[2] - 0.2
     # Overlap 0 with the group is the plain morph, frame for frame.
     zero = core.compute_morph(prepared, dataclasses.replace(settings, overlap=0.0))
     assert np.array_equal(zero.frames_world, plain.frames_world)
 
 
-@needs_engine
 def test_key_poses_run_the_delay_on_each_segment(monkeypatch):
     engine = core.load_engine()
     calls = []
     morph_key_poses = engine.morph_key_poses
-    monkeypatch.setattr(engine, "morph_key_poses",
-                        lambda *args, **kwargs: calls.append(kwargs) or morph_key_poses(*args, **kwargs))
+
+    @functools.wraps(morph_key_poses)  # its signature says what it takes (sequence.supports_local_timing)
+    def recording(*args, **kwargs):
+        calls.append(kwargs)
+        return morph_key_poses(*args, **kwargs)
+
+    monkeypatch.setattr(engine, "morph_key_poses", recording)
     middle = in_space((TREE_SOURCE + TREE_TARGET) / 2 + [0.1, 0.0], [2.0, 0.0, 0.0])
     worlds = [SOURCE_WORLD, middle, TARGET_WORLD]
     names = ["Pose 1", "Pose 2", "Pose 3"]
