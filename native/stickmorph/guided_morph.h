@@ -23,7 +23,12 @@
 //      (internal/rigid_steiner_placement.h: every triangle's source-to-
 //      target map interpolated as Alexa et al. 2000 do, turning the way
 //      the guide turns its figure edges, and the Steiner vertices the
-//      least-squares fit; issue 30). That is the guide frame G;
+//      least-squares fit; issue 30). That is the guide frame G. Where the
+//      guide runs its vertices on local clocks (local_timing.h, issue 31)
+//      every node takes a local time too (a Steiner vertex the least of
+//      its neighbours' nearer the figure), W(u) is blended row by row at
+//      each node's own time (any positive weights, [17]) and the rigid
+//      placement interpolates each triangle at its corners' mean time;
 //   3. if every judged node trusts G fully (its star there valid and not
 //      much thinner than at the ends), G is the frame. The judged nodes are
 //      the figure's vertices, and with the rigid placement the Steiner
@@ -106,6 +111,9 @@ struct GuidedMorphStats {
   /// Step 2's placement of the guide frame's Steiner vertices: true if as
   /// rigidly as possible, false if by the blended weights W(u).
   bool rigid_steiner_placement = false;
+  /// The guide runs its vertices on local clocks (local_timing.h, issue
+  /// 31): the Steiner vertices then lag with the parts beside them.
+  bool local_timing = false;
   /// Numeric LU factorizations of the Steiner (W(u)) and the blended
   /// systems, set-up included (the rest are iterations on the latest one, as MorphSolver's).
   int factorizations = 0;

@@ -50,6 +50,9 @@ class KeyPoseStretch : public GuideTrajectory {
   }
   double parameter_at(double t, Easing) const override { return t; }
   bool retimed_by_morph() const override { return false; }
+  std::vector<double> vertex_times(double u) const override {
+    return clock_ ? clock_->vertex_times(u) : std::vector<double>{};
+  }
 
  private:
   std::shared_ptr<const KeyPoseGuide> guide_;

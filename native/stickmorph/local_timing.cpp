@@ -96,6 +96,12 @@ std::vector<double> LocalClock::edge_times(double u) const {
   return times;
 }
 
+std::vector<double> LocalClock::vertex_times(double u) const {
+  std::vector<double> times(weight_.size());
+  for (std::size_t v = 0; v < weight_.size(); ++v) times[v] = local_time(u, weight_[v], overlap_);
+  return times;
+}
+
 void LocalClock::place_parts(double u, std::vector<Vec2>& positions) const {
   if (positions.size() != weight_.size())
     throw InternalError("LocalClock::place_parts: " + std::to_string(positions.size()) + " positions for " +

@@ -88,6 +88,8 @@ class LocalClock {
 
   /// #E: every edge's local time at u, the mean of its ends'.
   std::vector<double> edge_times(double u) const;
+  /// #V: every vertex's local time at u.
+  std::vector<double> vertex_times(double u) const;
 
   /// Moves each part of `positions` (#V by 2, a figure whose edges are at
   /// their local times) rigidly, so that the centroid of its vertices, each

@@ -170,6 +170,10 @@ std::vector<Vec2> RigidGuide::State::positions(double u, const std::vector<Vec2>
 
 bool RigidGuide::retimed_by_morph() const { return !state_->clock; }
 
+std::vector<double> RigidGuide::vertex_times(double u) const {
+  return state_->clock ? state_->clock->vertex_times(u) : std::vector<double>{};
+}
+
 double RigidGuide::parameter_at(double t, Easing easing) const {
   if (!(t >= 0 && t <= 1)) throw InvalidArgumentError("the morph time must be in [0, 1]");
   if (t == 0 || t == 1) return t;

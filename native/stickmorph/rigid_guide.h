@@ -61,6 +61,11 @@ class GuideTrajectory {
   /// is part of the motion (a key-pose segment, whose speed at its keys
   /// must match its neighbours') says no, and is followed at its own times.
   virtual bool retimed_by_morph() const { return true; }
+  /// Local timing (local_timing.h): every vertex's local time at morph
+  /// parameter u (#V), or empty where the whole figure runs on u itself
+  /// (no local timing, or overlap 0). GuidedMorph places the guide frame's
+  /// Steiner vertices on the same clocks.
+  virtual std::vector<double> vertex_times(double /*u*/) const { return {}; }
 };
 
 class RigidGuide : public GuideTrajectory {
@@ -102,6 +107,7 @@ class RigidGuide : public GuideTrajectory {
   /// Not where local timing delays parts: the delays are part of the
   /// motion, and retiming by the morph's own speed would move them.
   bool retimed_by_morph() const override;
+  std::vector<double> vertex_times(double u) const override;
 
  private:
   struct State;

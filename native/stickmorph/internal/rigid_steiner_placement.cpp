@@ -10,7 +10,10 @@
 #include <cmath>
 #include <deque>
 #include <map>
+#include <string>
 #include <utility>
+
+#include "stickmorph/errors.h"
 
 namespace stickmorph {
 namespace internal {
@@ -152,12 +155,31 @@ RigidSteinerPlacement::RigidSteinerPlacement(RigidSteinerPlacement&&) noexcept =
 RigidSteinerPlacement& RigidSteinerPlacement::operator=(RigidSteinerPlacement&&) noexcept = default;
 
 bool RigidSteinerPlacement::place(double u, std::vector<Vec2>& positions) const {
+  return place_at([u](std::size_t) { return u; }, positions);
+}
+
+bool RigidSteinerPlacement::place(const std::vector<double>& node_times, std::vector<Vec2>& positions) const {
+  if (node_times.size() != positions.size())
+    throw InternalError("RigidSteinerPlacement::place: " + std::to_string(node_times.size()) + " node times for " +
+                        std::to_string(positions.size()) + " nodes");
+  const State& s = *state_;
+  return place_at(
+      [&](std::size_t t) {
+        const auto& tr = s.triangles[t];
+        return (node_times[std::size_t(tr[0])] + node_times[std::size_t(tr[1])] + node_times[std::size_t(tr[2])]) / 3;
+      },
+      positions);
+}
+
+template <class TriangleTime>
+bool RigidSteinerPlacement::place_at(const TriangleTime& time_of, std::vector<Vec2>& positions) const {
   const State& s = *state_;
   if (s.steiner == 0) return true;
   if (!s.factorized) return false;
   Eigen::MatrixX2d rhs = Eigen::MatrixX2d::Zero(s.steiner, 2);
   for (std::size_t t = 0; t < s.triangles.size(); ++t) {
     const auto& tr = s.triangles[t];
+    const double u = time_of(t);
     // A_t(u) = R(u theta) ((1 - u) I + u S).
     const Matrix2& st = s.stretch[t];
     const double m00 = (1 - u) + u * st[0], m01 = u * st[1], m10 = u * st[2], m11 = (1 - u) + u * st[3];

@@ -61,8 +61,15 @@ class RigidSteinerPlacement {
   /// False if the system could not be factorized (then `positions` is
   /// unchanged).
   bool place(double u, std::vector<Vec2>& positions) const;
+  /// The same with every node on its own clock (local timing, issue 31):
+  /// each triangle's map interpolated at the mean of its corners'
+  /// `node_times` (all n + k + s nodes), so that the triangles about a
+  /// lagging limb turn when it does. Equal times are place(u).
+  bool place(const std::vector<double>& node_times, std::vector<Vec2>& positions) const;
 
  private:
+  template <class TriangleTime>
+  bool place_at(const TriangleTime& time_of, std::vector<Vec2>& positions) const;
   struct State;
   std::unique_ptr<State> state_;
 };
