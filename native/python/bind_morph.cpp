@@ -570,10 +570,10 @@ Args:
     does and the matched figure is morphed (every frame verified as usual).
   pins: with correspond="auto", optional #P by 2 integer array-like of
     (source vertex, target vertex) pairs the matching must respect.
-  delay, overlap: local timing (overlapping action), given together. delay
-    is #V delay weights in [0, 1], one per source vertex (with
-    correspond="auto" a dummy takes the weight interpolated along its
-    edge); overlap d in [0, 1). Every part moves at its local time
+  delay: local timing (overlapping action), given with overlap: #V delay
+    weights in [0, 1], one per source vertex (with correspond="auto" a
+    dummy takes the weight interpolated along its edge).
+  overlap: d in [0, 1), given with delay. Every part moves at its local time
     clamp((t - d w) / (1 - d), 0, 1): weight-0 parts lead and finish at
     1 - d, weight-1 parts start at d and finish last; an edge turns and
     stretches at the mean of its ends' local times. Frames stay valid and

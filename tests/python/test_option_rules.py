@@ -26,6 +26,8 @@ EXPECTED = {
     "easing": {"methods": ("rigid",), "choices": ("none", "in-out"), "default": "none"},
     "correspond": {"methods": METHODS, "choices": ("index", "auto"), "default": "index"},
     "pins": {"methods": METHODS},
+    # Local timing (issue 31): delay= with overlap=; the CLI's --timing FILE.
+    "delay": {"methods": ("rigid",)},
 }
 
 # A small pair: a bent polyline straightening out.
@@ -40,6 +42,8 @@ def valid_value(name, rule, method):
         return method
     if name == "pins":
         return [[0, 0]]
+    if name == "delay":
+        return [0.0, 0.0, 1.0]
     return rule["default"]
 
 
@@ -50,6 +54,8 @@ def arguments(name, value, method):
         kwargs["method"] = method
     if name == "pins":
         kwargs["correspond"] = "auto"
+    if name == "delay":
+        kwargs["overlap"] = 0.3
     return kwargs
 
 
@@ -83,7 +89,7 @@ ACCEPTED = [(name, method) for name, rule in EXPECTED.items() for method in rule
 
 
 def test_some_options_are_refused_by_some_method():
-    assert len(REFUSED) == 5 + 2 * 3
+    assert len(REFUSED) == 5 + 2 * 4
 
 
 @pytest.mark.parametrize("name,method", REFUSED)
