@@ -12,6 +12,10 @@
 //    1, its frames hold the figure's n vertices (step 5), and its first and
 //    last frames of all nodes are exactly the triangulation's source and
 //    target positions (morph.h).
+//  - the rigid morph with local timing (local_timing.h, issue 31; delay
+//    weights spread over [0, 1] by vertex index, overlap 0.4) succeeds on
+//    the same pair, with the same frame count and its first and last
+//    frames exactly the figures.
 //
 // Two input encodings, told apart by the first byte:
 //
@@ -61,6 +65,7 @@
 #include "stickmorph/figure_io.h"
 #include "stickmorph/figure_triangulation.h"
 #include "stickmorph/json.h"
+#include "stickmorph/local_timing.h"
 #include "stickmorph/morph.h"
 #include "stickmorph/morph_stick_figures.h"
 
@@ -264,6 +269,19 @@ void triangulate_and_morph(const PairInput& input) {
   if (!same_positions(morph.node_frames.front().data(), triangulation.source.data(), nodes) ||
       !same_positions(morph.node_frames.back().data(), triangulation.target.data(), nodes)) {
     fuzz::report_finding("the morph's first or last frame is not the source or the target");
+  }
+
+  // Local timing on the same pair: the decoding is untouched, so the weights
+  // come from the vertex numbers (every weight from 0 to 1 taken as n grows).
+  if (options.method == MorphMethod::Rigid) {
+    std::vector<double> delay(n);
+    for (std::size_t v = 0; v < n; ++v) delay[v] = double((v * 7) % 11) / 10.0;
+    MorphStickFiguresOptions timed = input.options;
+    timed.timing = LocalTiming(std::move(delay), 0.4);
+    const MorphStickFiguresResult lagged = morph_stick_figures(source, target, timed);
+    if (lagged.frames.size() != frames || lagged.frames.front() != source.vertices ||
+        lagged.frames.back() != target.vertices)
+      fuzz::report_finding("the locally timed morph's frames or its end frames are not the input figures");
   }
 
   // The straight-line baseline on the same pair: it may self-intersect, but
