@@ -5,6 +5,8 @@
         --out out/monkey_to_player [--frames 60] [--resolution 960 540]
     blender ... --python scripts/render_demo.py -- --sample blend_samples/key_poses/stick_man_wave.blend \
         --key-poses wave_keys --zip dist/stick_morph-<version>.zip --out out/stick_man_wave
+    blender ... --python scripts/render_demo.py -- --sample blend_samples/local_timing/stick_man_lag.blend \
+        --zip dist/stick_morph-<version>.zip --out out/stick_man_lag --frames 48
 
 Steps:
 1. Re-launches Blender with BLENDER_USER_SCRIPTS, BLENDER_USER_CONFIG and
@@ -12,8 +14,11 @@ Steps:
    does), so the real user configuration is never touched; the folder is
    removed afterwards.
 2. Installs and enables the add-on from the zip there.
-3. Opens the sample and bakes `<name>_source` -> `<name>_target` with
-   object.stick_morph_bake (renderable Geometry Nodes tubes), frames 1..N;
+3. Opens the sample and bakes `<name>_source` -> `<name>_target` (or, where
+   the sample has no such objects, the Source and Target its scene's Stick
+   Morph settings name) with object.stick_morph_bake (renderable Geometry
+   Nodes tubes), frames 1..N, with the Delay Group and Overlap those
+   settings name (local timing, issue 31: blend_samples/local_timing/);
    with --key-poses COLLECTION, the collection's meshes as key poses with
    object.stick_morph_bake_sequence, each key at its own key frame (issue 28).
 4. Sets up Workbench for a clear picture: flat dark tubes on a light
@@ -96,10 +101,23 @@ def find_pair(sample):
     name = os.path.splitext(os.path.basename(sample))[0]
     source = bpy.data.objects.get(f"{name}_source")
     target = bpy.data.objects.get(f"{name}_target")
+    settings = getattr(bpy.context.scene, "stick_morph", None)
+    if (source is None or target is None) and settings is not None and settings.source and settings.target:
+        source, target = settings.source, settings.target
     if source is None or target is None:
         meshes = sorted(o.name for o in bpy.data.objects if o.type == "MESH")
-        fail(f"{sample} has no objects {name}_source and {name}_target (meshes: {', '.join(meshes)})")
+        fail(f"{sample} has no objects {name}_source and {name}_target, nor a Source and a Target in its "
+             f"scene's Stick Morph settings (meshes: {', '.join(meshes)})")
     return name, source, target
+
+
+def local_timing():
+    """The sample scene's Delay Group and Overlap (none: the plain morph)."""
+    import bpy
+    settings = getattr(bpy.context.scene, "stick_morph", None)
+    if settings is None or not settings.delay_group:
+        return {}
+    return {"delay_group": settings.delay_group, "overlap": settings.overlap}
 
 
 def bake(source, target, frames, tube_radius):
@@ -108,16 +126,18 @@ def bake(source, target, frames, tube_radius):
         obj.select_set(False)
     bpy.context.view_layer.objects.active = None
     started = time.perf_counter()
+    timing = local_timing()
     result = bpy.ops.object.stick_morph_bake(
         source=source.name, target=target.name, frame_start=1, frame_count=frames,
-        renderable=True, tube_radius=tube_radius, easing="NONE", set_frame_range=True)
+        renderable=True, tube_radius=tube_radius, easing="NONE", set_frame_range=True, **timing)
     if result != {"FINISHED"}:
         fail(f"baking {source.name} -> {target.name} failed ({result}); see the report above")
     obj = bpy.context.view_layer.objects.active
     if obj is None or obj.get("stick_morph_role") != "result":
         fail("the bake did not leave its result active")
+    lag = f", '{timing['delay_group']}' lagging by {timing['overlap']:g}" if timing else ""
     print(f"baked {source.name} -> {target.name} into '{obj.name}': {len(obj.data.vertices)} vertices, "
-          f"{frames} frames, {time.perf_counter() - started:.2f} s", flush=True)
+          f"{frames} frames{lag}, {time.perf_counter() - started:.2f} s", flush=True)
     return obj
 
 

@@ -2,7 +2,8 @@
 # The demo's bake and render, small: builds the package for the Blender on
 # PATH, bakes monkey -> basketball player with scripts/render_demo.py (12
 # frames at 320x180) and the waving stick man through its four key poses
-# (issue 28: object.stick_morph_bake_sequence, 97 frames at 320x180), and
+# (issue 28: object.stick_morph_bake_sequence, 97 frames at 320x180) and the
+# stick man whose hand lags (issue 31: the sample scene's Delay Group), and
 # checks that the PNG frames and the MP4s were written.
 # scripts/blender_matrix.sh runs it in every tested Blender, so the README
 # demo's render is known to work in 3.4, 4.3 and 5.2 alike.
@@ -49,3 +50,17 @@ key_pngs=$(find "$out/key_poses/frames" -name 'frame_*.png' | wc -l)
 [[ "$key_pngs" -eq 73 ]] || { echo "render_smoke.sh: $key_pngs PNG frames of the key poses, expected 73" >&2; exit 1; }
 [[ "$(head -c 8 "$out/key_poses/morph.mp4" | tail -c 4)" == "ftyp" ]] || { echo "render_smoke.sh: the key poses' morph.mp4 is not an MP4 file" >&2; exit 1; }
 echo "render smoke: key poses of wave_keys baked and rendered $key_pngs frames and an MP4"
+
+# The local-timing sample (issue 31): the scene's settings name the pair,
+# its Delay Group and Overlap; the log says the group lagged.
+if ! blender -b --factory-startup --python-exit-code 1 --python scripts/render_demo.py -- \
+    --sample blend_samples/local_timing/stick_man_lag.blend --zip "$package" --out "$out/local_timing" \
+    --frames "$frames" --resolution 320 180 > "$out/local_timing.log" 2>&1; then
+  tail -n 40 "$out/local_timing.log" >&2
+  echo "render_smoke.sh: the local-timing bake and render failed" >&2
+  exit 1
+fi
+grep -q "'lag' lagging by 0.3" "$out/local_timing.log" || { echo "render_smoke.sh: the local-timing bake did not use its Delay Group" >&2; exit 1; }
+lag_pngs=$(find "$out/local_timing/frames" -name 'frame_*.png' | wc -l)
+[[ "$lag_pngs" -eq "$frames" ]] || { echo "render_smoke.sh: $lag_pngs PNG frames of the local-timing sample, expected $frames" >&2; exit 1; }
+echo "render smoke: the local-timing sample baked with its Delay Group and rendered $lag_pngs frames"
