@@ -94,6 +94,40 @@ class InvalidFigureError : public Error {
   std::string role_;
 };
 
+/// What is wrong with a drawing that clean_drawing (drawing_cleaning.h)
+/// cannot make into a stick figure.
+enum class DrawingDefect {
+  NoStrokes,            ///< no strokes (or a figure with no vertices)
+  TooFewPoints,         ///< a stroke of no point or a single point
+  CollapsedStroke,      ///< a stroke whose points all merge into one
+  NonFiniteCoordinate,  ///< NaN or infinity
+  CoordinateTooLarge,   ///< |x| or |y| above kMaxCoordinateMagnitude
+  IndexOutOfRange,      ///< an edge of a figure naming a vertex that does not exist
+  Retrace,              ///< a stroke runs back along itself for a length
+  Overlap,              ///< two strokes run along each other for a length
+  Unresolved,           ///< the cleaned drawing is still not a valid figure
+};
+
+/// A drawing that cannot be cleaned. `stroke` and `point` name where (the
+/// point's index within its stroke; for a figure an edge and a vertex),
+/// `other_stroke` the second stroke of an overlap; -1 where none applies.
+class InvalidDrawingError : public Error {
+ public:
+  InvalidDrawingError(DrawingDefect defect, std::string message, int stroke = -1, int point = -1,
+                      int other_stroke = -1)
+      : Error(std::move(message)), defect_(defect), stroke_(stroke), point_(point), other_stroke_(other_stroke) {}
+  DrawingDefect defect() const { return defect_; }
+  int stroke() const { return stroke_; }
+  int point() const { return point_; }
+  int other_stroke() const { return other_stroke_; }
+
+ private:
+  DrawingDefect defect_;
+  int stroke_;
+  int point_;
+  int other_stroke_;
+};
+
 /// Arguments that are malformed independently of geometry: arrays of the
 /// wrong shape, an unknown option name, a frame count below 2, ...
 class InvalidArgumentError : public Error {
