@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -225,6 +226,17 @@ std::optional<long long> integer_option(const ParsedArguments& arguments, std::s
   const std::optional<long long> value = whole_number(*text);
   if (!value)
     throw InvalidArgumentError("option " + std::string(name) + " needs a whole number, got " + single_quoted(*text));
+  return value;
+}
+
+std::optional<double> number_option(const ParsedArguments& arguments, std::string_view name) {
+  const std::string* text = option_value(arguments, name);
+  if (text == nullptr) return std::nullopt;
+  double value = 0;
+  const char* end = text->data() + text->size();
+  const auto [ptr, error] = std::from_chars(text->data(), end, value);
+  if (text->empty() || error != std::errc() || ptr != end || !std::isfinite(value))
+    throw InvalidArgumentError("option " + std::string(name) + " needs a finite number, got " + single_quoted(*text));
   return value;
 }
 

@@ -72,6 +72,10 @@ const std::string& required_option(const ParsedArguments& arguments, std::string
 /// @throws InvalidArgumentError naming the option for anything but a whole number.
 std::optional<long long> integer_option(const ParsedArguments& arguments, std::string_view name);
 
+/// A finite number option, e.g. --tolerance 0.5.
+/// @throws InvalidArgumentError naming the option for anything else.
+std::optional<double> number_option(const ParsedArguments& arguments, std::string_view name);
+
 /// A comma-separated list of whole numbers, e.g. --keys-at 0,20,48.
 /// @throws InvalidArgumentError naming the option and the entry.
 std::vector<long long> integer_list_option(const ParsedArguments& arguments, std::string_view name);

@@ -221,6 +221,181 @@ std::string read_input_file(const std::string& path) {
 
 StickFigure read_figure_file(const std::string& path) { return parse_figure(read_input_file(path), path); }
 
+namespace {
+
+std::vector<std::vector<Vec2>> read_strokes(const JsonValue& list, const ShapeErrors& errors,
+                                            std::vector<bool>& cyclic) {
+  if (!list.is_array())
+    errors.fail(list, std::string("\"strokes\" must be an array of {\"points\": [[x, y], ...]} objects, got ") +
+                          describe_kind(list.kind()));
+  std::vector<std::vector<Vec2>> strokes;
+  for (const JsonValue& entry : list.as_array()) {
+    const std::string name = "stroke " + std::to_string(strokes.size());
+    if (!entry.is_object())
+      errors.fail(entry, name + " must be an object {\"points\": [[x, y], ...], \"cyclic\": false}, got " +
+                             describe_kind(entry.kind()));
+    const JsonValue* points = entry.find("points");
+    if (points == nullptr) errors.fail(entry, "missing field \"points\" in " + name);
+    if (!points->is_array())
+      errors.fail(*points, name + ": \"points\" must be an array of [x, y] pairs, got " + describe_kind(points->kind()));
+    std::vector<Vec2> stroke;
+    for (const JsonValue& point : points->as_array()) {
+      const std::string where = name + ", point " + std::to_string(stroke.size());
+      if (!point.is_array() || point.as_array().size() != 2)
+        errors.fail(point, where + " must be an array of 2 numbers [x, y], got " + describe_shape(point));
+      Vec2 at{};
+      for (std::size_t axis = 0; axis < 2; ++axis) {
+        const JsonValue& coordinate = point.as_array()[axis];
+        if (!coordinate.is_number())
+          errors.fail(coordinate, where + ": expected a number for " + (axis == 0 ? "x" : "y") + ", got " +
+                                      describe_kind(coordinate.kind()));
+        at[axis] = coordinate.as_number();
+      }
+      stroke.push_back(at);
+    }
+    bool closed = false;
+    if (const JsonValue* flag = entry.find("cyclic")) {
+      if (!flag->is_bool()) errors.fail(*flag, name + ": \"cyclic\" must be true or false, got " + describe_kind(flag->kind()));
+      closed = flag->as_bool();
+    }
+    cyclic.push_back(closed);
+    strokes.push_back(std::move(stroke));
+  }
+  return strokes;
+}
+
+}  // namespace
+
+Drawing parse_drawing(const std::string& text, const std::string& origin) {
+  const ShapeErrors errors(origin);
+  JsonValue document;
+  try {
+    document = parse_json(text);
+  } catch (const JsonError& error) {
+    throw JsonError(errors.prefix() + error.what());
+  }
+  if (!document.is_object())
+    errors.fail(document, std::string("a drawing file must hold a JSON object with \"strokes\" (or a figure's "
+                                      "\"vertices\" and \"edges\"), got ") +
+                              describe_kind(document.kind()));
+  std::string name;
+  if (const JsonValue* name_value = document.find("name")) {
+    if (!name_value->is_string())
+      errors.fail(*name_value, std::string("\"name\" must be a string, got ") + describe_kind(name_value->kind()));
+    name = name_value->as_string();
+  }
+  try {
+    if (const JsonValue* strokes = document.find("strokes")) {
+      if (document.find("vertices") || document.find("edges"))
+        errors.fail(document, "a drawing file holds either \"strokes\" or a figure's \"vertices\" and \"edges\", not both");
+      std::vector<bool> cyclic;
+      std::vector<std::vector<Vec2>> points = read_strokes(*strokes, errors, cyclic);
+      return drawing_from_strokes(points, std::move(cyclic), std::move(name));
+    }
+    if (!document.find("vertices") && !document.find("edges"))
+      errors.fail(document, "missing field \"strokes\" (a drawing) or \"vertices\" and \"edges\" (a figure)");
+    std::vector<Vec2> vertices = read_vertices(require_member(document, "vertices", errors), errors);
+    const auto edges = read_edges(require_member(document, "edges", errors), errors);
+    return drawing_from_figure(std::move(vertices), edges, std::move(name));
+  } catch (const InvalidDrawingError& error) {
+    throw InvalidDrawingError(error.defect(), errors.prefix() + error.what(), error.stroke(), error.point(),
+                              error.other_stroke());
+  }
+}
+
+Drawing read_drawing_file(const std::string& path) { return parse_drawing(read_input_file(path), path); }
+
+std::string cleaned_drawing_json(const CleanedDrawing& cleaned, const Drawing& drawing, const std::string& name) {
+  JsonWriter json;
+  json.begin_object();
+  json.key("name");
+  json.value(name);
+  json.key("vertices");
+  json.begin_array();
+  for (const Vec2& p : cleaned.figure.vertices) {
+    json.begin_array();
+    json.value(p[0]);
+    json.value(p[1]);
+    json.end_array();
+  }
+  json.end_array();
+  json.key("edges");
+  json.begin_array();
+  for (const Edge& e : cleaned.figure.edges) {
+    json.begin_array();
+    json.value(e[0]);
+    json.value(e[1]);
+    json.end_array();
+  }
+  json.end_array();
+  json.key("cleaning");
+  json.begin_object();
+  json.key("tolerance");
+  json.value(cleaned.tolerance);
+  json.key("junctions_made");
+  json.value(cleaned.junctions_made);
+  json.key("ends_snapped");
+  json.value(cleaned.ends_snapped);
+  json.key("points_merged");
+  json.value(cleaned.points_merged);
+  json.key("summary");
+  json.value(cleaned.summary());
+  json.key("changes");
+  json.begin_array();
+  const auto index_or_null = [&json](int value) {
+    if (value < 0)
+      json.null();
+    else
+      json.value(value);
+  };
+  for (const DrawingChange& change : cleaned.changes) {
+    json.begin_object();
+    json.key("kind");
+    json.value(std::string(drawing_change_name(change.kind)));
+    json.key("stroke");
+    index_or_null(change.stroke);
+    json.key("point");
+    index_or_null(change.point);
+    json.key("other_stroke");
+    index_or_null(change.other_stroke);
+    json.key("at");
+    json.begin_array();
+    json.value(change.at[0]);
+    json.value(change.at[1]);
+    json.end_array();
+    json.key("distance");
+    json.value(change.distance);
+    json.end_object();
+  }
+  json.end_array();
+  json.key("strokes");
+  json.begin_array();
+  for (std::size_t s = 0; s < cleaned.stroke_vertices.size(); ++s) {
+    json.begin_object();
+    json.key("vertices");
+    json.begin_array();
+    for (int v : cleaned.stroke_vertices[s]) json.value(v);
+    json.end_array();
+    json.key("cyclic");
+    json.value(bool(cleaned.cyclic[s]));
+    json.end_object();
+  }
+  json.end_array();
+  // Per stroke, per input point, the vertex it became (a figure: per edge,
+  // its two vertices').
+  json.key("point_vertices");
+  json.begin_array();
+  for (const auto& stroke : drawing.strokes) {
+    json.begin_array();
+    for (int p : stroke) json.value(cleaned.point_vertex[std::size_t(p)]);
+    json.end_array();
+  }
+  json.end_array();
+  json.end_object();
+  json.end_object();
+  return json.finish();
+}
+
 std::string figure_json(const StickFigure& figure, const std::string& name) {
   JsonWriter json;
   json.begin_object();
