@@ -30,4 +30,7 @@ void bind_progress(pybind11::module_& m);
 /// morph_key_poses, the morph through a sequence of key poses (bind_key_poses.cpp).
 void bind_key_poses(pybind11::module_& m);
 
+/// clean_drawing, clean_figure and CleanedDrawing (bind_drawings.cpp).
+void bind_drawings(pybind11::module_& m);
+
 }  // namespace stickmorph::python

@@ -31,6 +31,7 @@ namespace sm = stickmorph;
 /// The Python names of the engine's enums ('crossing_edges', 'mirror_image').
 const char* defect_name(sm::FigureDefect defect);
 const char* incompatibility_name(sm::Incompatibility kind);
+const char* drawing_defect_name(sm::DrawingDefect defect);
 
 /// Engine text as a Python str; bytes that are not UTF-8 become \x escapes.
 py::str to_str(const std::string& text);

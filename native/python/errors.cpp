@@ -40,6 +40,22 @@ const char* defect_name(sm::FigureDefect defect) {
                           std::to_string(static_cast<int>(defect)));
 }
 
+const char* drawing_defect_name(sm::DrawingDefect defect) {
+  switch (defect) {
+    case sm::DrawingDefect::NoStrokes: return "no_strokes";
+    case sm::DrawingDefect::TooFewPoints: return "too_few_points";
+    case sm::DrawingDefect::CollapsedStroke: return "collapsed_stroke";
+    case sm::DrawingDefect::NonFiniteCoordinate: return "non_finite_coordinate";
+    case sm::DrawingDefect::CoordinateTooLarge: return "coordinate_too_large";
+    case sm::DrawingDefect::IndexOutOfRange: return "index_out_of_range";
+    case sm::DrawingDefect::Retrace: return "retrace";
+    case sm::DrawingDefect::Overlap: return "overlap";
+    case sm::DrawingDefect::Unresolved: return "unresolved";
+  }
+  throw sm::InternalError("stickmorph module: unknown DrawingDefect value " +
+                          std::to_string(static_cast<int>(defect)));
+}
+
 const char* incompatibility_name(sm::Incompatibility kind) {
   switch (kind) {
     case sm::Incompatibility::None: return "none";
@@ -68,6 +84,7 @@ py::handle g_stickmorph_error;
 py::handle g_json_error;
 py::handle g_invalid_figure_error;
 py::handle g_invalid_argument_error;
+py::handle g_invalid_drawing_error;
 py::handle g_incompatible_figures_error;
 py::handle g_verification_error;
 py::handle g_numeric_range_error;
@@ -182,6 +199,15 @@ void translate_exception(std::exception_ptr pointer) {
     // stay whole.
     instance.attr("detail") = to_str(without_prefix(e.what(), e.role().empty() ? "" : e.role() + ": "));
     PyErr_SetObject(g_invalid_figure_error.ptr(), instance.ptr());
+  } catch (const sm::InvalidDrawingError& e) {
+    const py::object type = py::reinterpret_borrow<py::object>(g_invalid_drawing_error);
+    py::object instance = type(to_str(e.what()));
+    instance.attr("defect") = drawing_defect_name(e.defect());
+    const auto index = [](int value) { return value < 0 ? py::object(py::none()) : py::object(py::int_(value)); };
+    instance.attr("stroke") = index(e.stroke());
+    instance.attr("point") = index(e.point());
+    instance.attr("other_stroke") = index(e.other_stroke());
+    PyErr_SetObject(g_invalid_drawing_error.ptr(), instance.ptr());
   } catch (const sm::FileError& e) {
     // An OSError like the ones open() raises: errno, strerror and filename
     // set, so `except FileNotFoundError` and `e.filename` work; the message
@@ -240,6 +266,18 @@ void bind_errors(py::module_& m) {
       "            message when it has none), to name the figure in the caller's words");
   for (const char* attribute : {"defect", "vertices", "edges", "role", "detail"})
     py::setattr(g_invalid_figure_error, attribute, py::none());
+  g_invalid_drawing_error = new_exception(
+      m, "InvalidDrawingError", g_stickmorph_error,
+      "A drawing that clean_drawing or clean_figure cannot make into a stick figure.\n\n"
+      "Attributes (set on instances raised by stickmorph; None on the class):\n"
+      "  defect        what is wrong: 'no_strokes', 'too_few_points', 'collapsed_stroke',\n"
+      "                'non_finite_coordinate', 'coordinate_too_large', 'index_out_of_range',\n"
+      "                'retrace', 'overlap' or 'unresolved'\n"
+      "  stroke        the stroke (a figure's edge) named, or None\n"
+      "  point         the point's index within that stroke (a figure's vertex), or None\n"
+      "  other_stroke  the second stroke of an overlap, or None");
+  for (const char* attribute : {"defect", "stroke", "point", "other_stroke"})
+    py::setattr(g_invalid_drawing_error, attribute, py::none());
   g_invalid_argument_error = new_exception(
       m, "InvalidArgumentError", g_stickmorph_error,
       "An argument of the wrong shape or type, independently of geometry.");

@@ -51,6 +51,7 @@ PYBIND11_MODULE(stickmorph, m) {
   m.attr("__version__") = STICKMORPH_VERSION;  // from CMake
   stickmorph::python::bind_errors(m);
   stickmorph::python::bind_figures(m);
+  stickmorph::python::bind_drawings(m);
   stickmorph::python::bind_triangulation(m);
   stickmorph::python::bind_options(m);
   stickmorph::python::bind_progress(m);  // before the calls that take progress=
