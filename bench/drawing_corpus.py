@@ -716,7 +716,9 @@ def analyse(strokes, limit=50):
         p, q, r, u = s[3], s[4], t[3], t[4]
         if adjacent(s, t):
             shared = ({p, q} & {r, u})
-            if shared and len({p, q, r, u}) == 3:
+            if len({p, q, r, u}) == 2:  # the same segment drawn back (a, b, a)
+                problems.append(f"stroke {s[0]} retraces itself at point {s[2] if s[2] == t[1] else t[2]}")
+            elif shared and len({p, q, r, u}) == 3:
                 c = shared.pop()
                 far_s = q if p == c else p
                 far_t = u if r == c else r
