@@ -16,6 +16,8 @@ Input (written by bench/benchmarks.sh under out/benchmarks/):
                       headless Blender (issue 29; optional, likewise)
   local_timing.json   bench/local_timing.py --json: the measured lag of a delayed
                       limb against the overlap asked (issue 31; optional, likewise)
+  cleaning.json       bench/cleaning.py --json: `stickmorph clean` on hand-drawn-like
+                      drawings (issue 32; optional, likewise)
 
 Output: BENCHMARKS.md and docs/benchmarks/*.svg. Every number in them comes
 from the input files; the text around them only explains. Runs with Debian's
@@ -32,6 +34,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from benchmarks_md.blender import blender_headline, blender_section, read_blender  # noqa: E402,F401
+from benchmarks_md.cleaning import cleaning_section, read_cleaning  # noqa: E402,F401
 from benchmarks_md.common import (STAGES, Cell, InputError, fit_exponent, index_cells,  # noqa: E402,F401
                                   read_inputs, read_scrub)
 from benchmarks_md.correspondence import (correspondence_requirement, correspondence_section,  # noqa: E402,F401
@@ -45,7 +48,7 @@ from benchmarks_md.writer import write_report  # noqa: E402
 
 def append_sections(out_path, md):
     """Sections written after write_report's, at the end of the report (issue 31's local
-    timing)."""
+    timing, issue 32's drawing cleaning)."""
     with open(out_path, "a", encoding="utf-8") as f:
         f.write("\n".join(md).rstrip() + "\n")
 
@@ -66,9 +69,11 @@ def main():
         sequences = read_sequences(args.data)
         blender = read_blender(args.data)
         local_timing = read_local_timing(args.data)
+        cleaning = read_cleaning(args.data)
         write_report(records, polygon_pairs, run, args.output, args.plots, motion, correspondence, scrub,
                      sequences, blender)
         append_sections(args.output, local_timing_section(local_timing, args.output, args.plots))
+        append_sections(args.output, cleaning_section(cleaning, args.output, args.plots))
     except (InputError, KeyError) as error:
         print(f"error: make_benchmarks: incomplete benchmark data: {error}", file=sys.stderr)
         return 2

@@ -13,4 +13,6 @@ is the command; bench/README.md lists the modules):
   sequences.py       key poses (issue 28) from sequences.json: smoothness at the keys, filmstrip
   local_timing.py    local timing (issue 31) from local_timing.json: the measured lag of a delayed
                      limb against the overlap asked, filmstrips (make_benchmarks.py appends it)
+  cleaning.py        drawing cleaning (issue 32) from cleaning.json: planted defects found, validity,
+                     changes reported, idempotence, a drawing before and after (appended after it)
 """
