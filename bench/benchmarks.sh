@@ -41,6 +41,12 @@
 #                       validity, exact ends, d = 0 against the plain morph; skipped,
 #                       and the report says so, when `stickmorph morph --help` lists
 #                       no --timing
+#   drawing_corpus/     bench/drawing_corpus.py --seed 32: hand-drawn-like drawings
+#                       with gaps, touches, crossings and pen pauses planted
+#   cleaning.json       bench/cleaning.py on it (issue 32): `stickmorph clean`
+#                       checked (valid, every change reported, the defects found,
+#                       idempotent, pairs morphed); skipped, and the report says
+#                       so, when the CLI has no clean command
 #   blender.json        bench/blender_bake.py (issue 29): the bake and playback
 #                       in headless Blender at 10^3, 10^4 and 10^5 vertices,
 #                       with the add-on package built from the measured commit
@@ -68,11 +74,12 @@ scrub_large_frames=24
 scrub_families=polyline,spiral,polygon,tree,triangulation,thinned,rings
 blender_sizes=1000,10000,100000
 local_timing_count=36
+drawing_count=40
 working_tree=0
 for argument in "$@"; do
   case "$argument" in
     --quick) sizes=10,30,100,300; scrub_sizes=1000; scrub_frames=60; scrub_large= ; blender_sizes=1000
-             local_timing_count=10 ;;
+             local_timing_count=10; drawing_count=10 ;;
     --working-tree) working_tree=1 ;;
     *) echo "usage: bash bench/benchmarks.sh [--quick] [--working-tree]" >&2; exit 2 ;;
   esac
@@ -130,7 +137,7 @@ cmake --build "$build" -j2 --target stickmorph_benchmark stickmorph_benchmark_mo
 mkdir -p "$data"
 rm -rf "$data/polygon_pairs.json" "$data/morph.jsonl" "$data/correspondence.json" "$data/motion.json" \
   "$data/scrub.jsonl" "$data/scrub_large.jsonl" "$data/run.json" "$data/sequences.json" "$data/key_pose_corpus" "$data/blender.json" \
-  "$data/local_timing.json" "$data/local_timing_corpus"
+  "$data/local_timing.json" "$data/local_timing_corpus" "$data/cleaning.json" "$data/drawing_corpus"
 
 echo "==== polygon-pair corpus (tests/data/polygon_pairs) ===="
 "$build/stickmorph_benchmark" --json "$data/polygon_pairs.json" "$source_dir/tests/data/polygon_pairs" \
@@ -201,6 +208,18 @@ if [[ "$morph_help" == *--timing* ]]; then
   sed -n '/^plain (no --timing)/,$p' "$data/local_timing.md"
 else
   echo "==== local timing: not measured (\`stickmorph morph --help\` lists no --timing) ===="
+fi
+
+if "$build/stickmorph" clean --help >/dev/null 2>&1; then
+  echo "==== drawing cleaning (issue 32: bench/drawing_corpus.py, bench/cleaning.py) ===="
+  /usr/bin/python3 bench/drawing_corpus.py "$data/drawing_corpus" --seed 32 --count "$drawing_count" \
+    > "$data/drawing_corpus.log"
+  tail -1 "$data/drawing_corpus.log"
+  /usr/bin/python3 bench/cleaning.py "$data/drawing_corpus" --build-dir "$build" --json "$data/cleaning.json" \
+    > "$data/cleaning.md" 2> "$data/cleaning.log" || { tail -20 "$data/cleaning.log" >&2; exit 1; }
+  sed -n '/^kind /,$p' "$data/cleaning.md"
+else
+  echo "==== drawing cleaning: not measured (\`stickmorph clean --help\` fails) ===="
 fi
 
 if command -v "${BLENDER:-blender}" >/dev/null; then
