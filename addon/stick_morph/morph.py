@@ -174,10 +174,23 @@ def prepare_pair(source_world, source_edges, source_faces: int, source_name: str
     size = float(np.linalg.norm(both.max(axis=0) - both.min(axis=0)))
     check_planarity(((source_name, source_h), (target_name, target_h)), size, planarity_tolerance, fitted, plane)
 
+    return prepare_projected(source_xy, source_h, source_edges, source_name, target_xy, target_h, target_edges,
+                             target_name, fitted, size, setting, pins, source_delay)
+
+
+def prepare_projected(source_xy, source_h, source_edges, source_name: str, target_xy, target_h, target_edges,
+                      target_name: str, fitted: Plane, size: float, setting: str, pins=(),
+                      source_delay=None) -> PreparedPair:
+    """The figure to morph from two figures already checked and projected
+    onto their common plane `fitted` (in-plane points (V, 2), heights (V,),
+    edges): by index, or matched by stickmorph.correspond with the pins, as
+    the correspondence setting says (choose_correspondence). prepare_pair's
+    last step, and the drawings' (drawings.prepare_drawings: a Grease Pencil
+    drawing or a curve cleaned into a figure first). Raises StickMorphError."""
     def by_index(why):
         # The source's edges are the figure's (the target's are the same
         # set; the morph checks its compatibility as it starts).
-        count = len(source_world)
+        count = len(source_xy)
         matching = Matching(False, why, np.arange(count), np.arange(count), count, count)
         return PreparedPair(source_name, target_name, fitted, source_xy, target_xy, source_h, target_h,
                             source_edges, size, matching, delay=source_delay)
@@ -194,7 +207,7 @@ def prepare_pair(source_world, source_edges, source_faces: int, source_name: str
         c = result["correspondence"]
         source_vertex = np.asarray(c["source"], dtype=np.int64)
         target_vertex = np.asarray(c["target"], dtype=np.int64)
-        matching = Matching(True, why, source_vertex, target_vertex, len(source_world), len(target_world),
+        matching = Matching(True, why, source_vertex, target_vertex, len(source_xy), len(target_xy),
                             tuple(pins), dict(result["stats"]))
         return PreparedPair(
             source_name, target_name, fitted,
@@ -220,7 +233,7 @@ def prepare_pair(source_world, source_edges, source_faces: int, source_name: str
     # here: the morph by index checks it as it starts (one check per bake),
     # and morph_pair falls back on the matching when it refuses the pair.
     is_matched, why = choose_correspondence(
-        setting, len(source_world) == len(target_world),
+        setting, len(source_xy) == len(target_xy),
         compare_edge_sets(source_edges, target_edges) is None, bool(pins), lambda: True)
     if is_matched:
         return matched(why)
