@@ -108,6 +108,22 @@ def pin_names(source_names, target_names) -> tuple[list, list, list]:
     return sorted(a & b), sorted(a - b), sorted(b - a)
 
 
+# The object types a bake takes (issue 32): edge meshes; Grease Pencil,
+# legacy (Blender before 4.3) and v3 (4.3 and later, which converts legacy
+# files on load); curves and texts (their outlines). Here, not in
+# drawings.py, because the panel and the Source/Target pickers need them
+# without numpy or the module.
+GREASE_PENCIL_TYPES = ("GPENCIL", "GREASEPENCIL")
+CURVE_TYPES = ("CURVE", "FONT")
+FIGURE_TYPES = ("MESH",) + GREASE_PENCIL_TYPES + CURVE_TYPES
+
+
+def is_drawing_type(object_type: str) -> bool:
+    """Whether objects of this type are read as drawings (strokes cleaned
+    into a stick figure) rather than as edge meshes."""
+    return object_type in GREASE_PENCIL_TYPES + CURVE_TYPES
+
+
 class StickMorphError(Exception):
     """A problem with the user's input, reported as an ERROR; message is for the user."""
 
@@ -164,3 +180,14 @@ class BakeSettings:
     # motion (the engine's overlap d in [0, 1); 0 is the plain morph). Each
     # part moves at local time clamp((t - d w) / (1 - d), 0, 1).
     overlap: float = 0.3
+    # Drawings (issue 32). What the bake makes (drawings.OUTPUTS): AUTO, a
+    # Grease Pencil object for a Grease Pencil source and a mesh with its
+    # tube otherwise (meshes and curves, as before); MESH; GREASE_PENCIL.
+    output: str = "AUTO"
+    # How far apart a Grease Pencil drawing's or a curve's strokes may be
+    # and still be joined when it is cleaned into a stick figure
+    # (stickmorph.clean_drawing: ends this close snap, crossings become
+    # junctions), as a fraction of the drawing's size (the diagonal of its
+    # bounding box); 0 is the engine's default, 1% of the same. Meshes are
+    # not cleaned.
+    clean_tolerance: float = 0.0

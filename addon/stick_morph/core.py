@@ -9,7 +9,10 @@ the modules that hold it, split by concept.
   timing (delay_weights, local_times);
 - messages.py: user messages for the engine's exceptions;
 - morph.py: prepare_pair, compute_morph and their results;
-- naming.py: the result object's name.
+- naming.py: the result object's name;
+- drawings.py: Grease Pencil drawings and curves as figures (issue 32):
+  cleaned by the engine (prepare_drawings), and a morph back into strokes
+  (output_strokes).
 
 Everything here works on NumPy arrays and plain Python values, so it can be
 imported and tested outside Blender. The Blender side (operators.py,
@@ -41,7 +44,8 @@ height then moves in step with the figure.
 
 # The settings and the error type live in common.py, which imports without
 # numpy; they are part of core's interface too.
-from .common import BakeSettings, StickMorphError, is_pin_group, next_pin_name, pin_names  # noqa: F401
+from .common import (BakeSettings, StickMorphError, is_drawing_type, is_pin_group, next_pin_name,  # noqa: F401
+                     pin_names)
 from .native import load_engine, engine_limits, option_methods  # noqa: F401
 from .plane import PLANES, Plane, fit_plane, project, unproject, planarity_deviation  # noqa: F401
 from .correspondence import (  # noqa: F401
@@ -54,8 +58,13 @@ from .timing import (  # noqa: F401
 )
 from .messages import match_error_message, NESTING_DIFFERS, nesting_message, engine_error_message  # noqa: F401
 from .morph import (  # noqa: F401
-    MOTIONS, ROTATIONS, Fallback, IndexReport, PreparedPair, MorphResult, prepare_pair, compute_morph, morph_pair,
+    MOTIONS, ROTATIONS, Fallback, IndexReport, PreparedPair, MorphResult, prepare_pair, prepare_projected,
+    compute_morph, morph_pair,
     motion_summary, local_timing_summary,
     triangulation_world, tube_radius,
 )
 from .naming import MAX_RESULT_NAME_BYTES, RESULT_SUFFIX, result_name  # noqa: F401
+from .drawings import (  # noqa: F401
+    OUTPUTS, DrawingChoice, Stroke, Drawing, MeshFigure, CleanedSide, DrawingPair, OutputStroke, output_kind,
+    prepare_drawings, cleaning_summary, figure_chains, source_strokes, output_strokes,
+)
