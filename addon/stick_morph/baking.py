@@ -427,6 +427,7 @@ class Created:
         self.objects = []
         self.names = {}  # object -> the name it should have once a previous result is gone
         self.node_group = None
+        self.material = None  # the ink of a Grease Pencil result made from a mesh or a curve (drawing_io)
 
     def remove(self):
         for obj in reversed(self.objects):
@@ -436,17 +437,25 @@ class Created:
         if self.node_group is not None and self.node_group.users == 0:
             bpy.data.node_groups.remove(self.node_group)
         self.node_group = None
+        if self.material is not None and self.material.users == 0:
+            bpy.data.materials.remove(self.material)
+        self.material = None
 
 
 def remove_result_object(obj):
-    """Removes a result or helper object with its mesh, shape keys and action."""
+    """Removes a result or helper object with its mesh, shape keys and action
+    (or its Grease Pencil data, issue 32)."""
     mesh = obj.data if obj.type == "MESH" else None
+    pencil = obj.data if obj.type in ("GPENCIL", "GREASEPENCIL") else None
     action = None
     if mesh is not None and mesh.shape_keys is not None and mesh.shape_keys.animation_data is not None:
         action = mesh.shape_keys.animation_data.action
     bpy.data.objects.remove(obj)
     if mesh is not None and mesh.users == 0:
         bpy.data.meshes.remove(mesh)
+    if pencil is not None and pencil.users == 0:
+        # bpy.data.grease_pencils in 3.x and 5.x, grease_pencils_v3 in 4.3.
+        (getattr(bpy.data, "grease_pencils_v3", None) or bpy.data.grease_pencils).remove(pencil)
     if action is not None and action.users == 0:
         bpy.data.actions.remove(action)
 
@@ -481,21 +490,27 @@ def add_result_object(context, created, name, frames_world, edges, origin, frame
     return obj
 
 
-def build_result(context, source, target, prepared, morph, settings, report_progress=None):
+def build_result(context, source, target, prepared, morph, settings, report_progress=None, make_result=None):
     """Creates the result (and helper) objects from a computed morph, as
     settings (a core.BakeSettings) say: frame_start, renderable, tube_radius,
     show_triangulation. Returns (result object, Created). On failure
-    everything created is removed and the exception re-raised."""
+    everything created is removed and the exception re-raised.
+    make_result(created, name, origin, tags): makes the result object
+    instead of the mesh with shape keys (a Grease Pencil result, issue 32:
+    drawing_io.build_grease_pencil_result, which needs this module)."""
     created = Created()
     collection = context.collection or context.scene.collection
     name = core.result_name(source.name, target.name)
     origin = prepared.plane.origin
+    tags = {ROLE: "result", SOURCE: source.name, TARGET: target.name}
     try:
-        # The matched figure's m vertices and edges (by index, the source's).
-        obj = add_result_object(context, created, name, morph.frames_world, prepared.edges, origin,
-                                settings.frame_start, settings, prepared.size,
-                                {ROLE: "result", SOURCE: source.name, TARGET: target.name}, report_progress)
-        if prepared.matching.matched:
+        if make_result is not None:
+            obj = make_result(created, name, origin, tags)
+        else:
+            # The matched figure's m vertices and edges (by index, the source's).
+            obj = add_result_object(context, created, name, morph.frames_world, prepared.edges, origin,
+                                    settings.frame_start, settings, prepared.size, tags, report_progress)
+        if prepared.matching.matched and make_result is None:
             _add_vertex_attribute(obj.data, SOURCE_VERTEX_ATTRIBUTE, prepared.matching.source_vertex)
             _add_vertex_attribute(obj.data, TARGET_VERTEX_ATTRIBUTE, prepared.matching.target_vertex)
         if settings.show_triangulation and morph.triangulation is not None:

@@ -12,7 +12,7 @@ import os
 import bpy
 
 from . import dependencies
-from .common import StickMorphError
+from .common import FIGURE_TYPES, GREASE_PENCIL_TYPES, StickMorphError
 
 PACKAGE_DIR = os.path.dirname(os.path.abspath(__file__))
 
@@ -56,10 +56,14 @@ def resolve_pair(context, source_name, target_name):
         target = active
         source = selected[0] if selected[1] == active else selected[1]
     for obj, role in ((source, "source"), (target, "target")):
-        if obj.type != "MESH":
+        if obj.type not in FIGURE_TYPES:
             raise StickMorphError(
-                f"not two mesh objects: the {role} '{obj.name}' is a {obj.type.lower()}, not a mesh")
-    if source == target:
+                f"not two mesh objects (nor Grease Pencil objects or curves): the {role} '{obj.name}' is a "
+                f"{obj.type.lower()}, not a mesh, a Grease Pencil object or a curve")
+    # One Grease Pencil object may hold both drawings (two layers, or two
+    # keyframes of a layer: the Drawing panel's Source and Target Layer and
+    # Frame say which; drawing_io.read_pair refuses the same drawing twice).
+    if source == target and source.type not in GREASE_PENCIL_TYPES:
         raise StickMorphError(f"source and target are the same object '{source.name}'")
     return source, target
 

@@ -36,7 +36,8 @@ from .common import BakeSettings, StickMorphError, is_pin_group, next_pin_name
 # ui.py need not import this module); dependency_status is re-exported for
 # scripts and tests that ask the operators' module.
 from .helpers import dependency_status, edited_meshes, resolve_pair  # noqa: F401
-from .properties import OPTION_NAMES, addon_preferences, bake_settings, mesh_option_properties, option_properties
+from .properties import (OPTION_NAMES, addon_preferences, bake_settings, drawing_properties, mesh_option_properties,
+                         option_properties)
 
 class Progress(StageTimer):
     """The window manager's progress indicator, one call per stage, and the
@@ -277,7 +278,7 @@ class ModalBake(BakeExecute):
 
 
 class STICKMORPH_OT_bake(ModalBake, bpy.types.Operator):
-    """Bake a morph between two edge meshes (source, then target active) into a new object with shape keys, free of self-intersection unless Motion is Linear"""
+    """Bake a morph between two edge meshes, Grease Pencil drawings or curves (source, then target active) into a new object with shape keys (or Grease Pencil drawings), free of self-intersection unless Motion is Linear"""
     bl_idname = "object.stick_morph_bake"
     bl_label = "Bake Stick Morph"
     bl_options = {"REGISTER", "UNDO"}
@@ -294,6 +295,10 @@ class STICKMORPH_OT_bake(ModalBake, bpy.types.Operator):
                                    default=BakeSettings.frame_start, options=set()),
         **option_properties(),
         **mesh_option_properties(),
+        # Grease Pencil layers and frames, Pin Selected Points (issue 32);
+        # SKIP_SAVE as source and target: a call from the menu reads the
+        # active layer at the current frame of its own selection.
+        **drawing_properties({"SKIP_SAVE"}),
     }
 
     def draw(self, context):
@@ -309,6 +314,8 @@ class STICKMORPH_OT_bake(ModalBake, bpy.types.Operator):
         # Redo re-runs with these names even if the selection changed meanwhile.
         self.source, self.target = source.name, target.name
         depsgraph = baking.evaluated_depsgraph(context)
+        if core.is_drawing_type(source.type) or core.is_drawing_type(target.type):
+            return self._start_drawings(context, progress, settings, source, target, depsgraph)
         source_world, source_edges, source_faces = baking.mesh_world_data(source, depsgraph)
         target_world, target_edges, target_faces = baking.mesh_world_data(target, depsgraph)
         # The pins: vertex groups named pin* (core.read_pins checks them).
@@ -330,14 +337,33 @@ class STICKMORPH_OT_bake(ModalBake, bpy.types.Operator):
             # incompatible that way (the bake's one compatibility check).
             prepared, morph = core.morph_pair(prepared, settings)
             timer.stage("morph", 60)
-            return settings, prepared, morph
+            return settings, prepared, morph, None
+
+        return work
+
+    def _start_drawings(self, context, progress, settings, source, target, depsgraph):
+        """start() for a pair with a Grease Pencil drawing or a curve (issue
+        32): the drawings are read here; the worker cleans them into stick
+        figures (drawings.prepare_drawings) and morphs them."""
+        from . import core, drawing_io
+
+        source_figure, target_figure, pin_selected = drawing_io.read_pair(context, source, target, self, settings,
+                                                                          depsgraph)
+        progress.stage("read", 5)
+
+        def work(timer):  # free of bpy: the worker thread of a modal bake
+            prepared, cleaning = core.prepare_drawings(source_figure, target_figure, settings, pin_selected)
+            timer.stage("check", 15)
+            prepared, morph = core.morph_pair(prepared, settings)
+            timer.stage("morph", 60)
+            return settings, prepared, morph, (source_figure, cleaning)
 
         return work
 
     def finish(self, context, progress, computed):
         from . import baking, core
 
-        settings, prepared, morph = computed
+        settings, prepared, morph, drawn = computed
         started = self._started
         # By name: a modal bake's objects are looked up again after the
         # engine ran (the modal handler keeps the scene as it was meanwhile).
@@ -348,9 +374,13 @@ class STICKMORPH_OT_bake(ModalBake, bpy.types.Operator):
         def frame_done(k):
             progress.update(60 + int(35 * k / max(count, 1)))
 
+        make_result = None
+        if core.output_kind(settings.output, source.type) == "GREASE_PENCIL":
+            from . import drawing_io
+            make_result = drawing_io.result_builder(context, source, prepared, morph, settings, drawn, frame_done)
         try:
             result, created = baking.build_result(context, source, target, prepared, morph, settings,
-                                                  report_progress=frame_done)
+                                                  report_progress=frame_done, make_result=make_result)
         except Exception as error:  # build_result removed what it made
             raise StickMorphError(f"building the result failed: {error}") from error
         # With the previous result gone, the new one takes the plain names.
@@ -367,6 +397,11 @@ class STICKMORPH_OT_bake(ModalBake, bpy.types.Operator):
         timing_text = core.local_timing_summary(morph, settings.delay_group)
         if timing_text:
             motion_text = f"{motion_text}; {timing_text}"
+        if drawn is not None:
+            # Every change the cleaning made to a drawing, said (issue 32).
+            cleaned = [core.cleaning_summary(role, side) for role, side in
+                       (("source", drawn[1].source), ("target", drawn[1].target))]
+            match_text = "; ".join([match_text] + [text for text in cleaned if text])
         scene_settings = getattr(context.scene, "stick_morph", None)
         if scene_settings is not None:
             scene_settings.last_result = result.name

@@ -8,8 +8,9 @@ the Load Defaults operator is in operators.py with the others.
 import bpy
 from bpy.props import FloatProperty, IntProperty, PointerProperty, StringProperty
 
+from .common import FIGURE_TYPES
 from .properties import (_DEFAULTS, MESH_OPTIONS, OPTION_NAMES, addon_preferences, bake_settings,  # noqa: F401
-                         key_pose_properties, mesh_option_properties, option_properties)
+                         drawing_properties, key_pose_properties, mesh_option_properties, option_properties)
 
 
 class StickMorphPreferences(bpy.types.AddonPreferences):
@@ -27,8 +28,9 @@ class StickMorphPreferences(bpy.types.AddonPreferences):
             layout.prop(self, name)
 
 
-def _is_mesh(self, obj):
-    return obj.type == "MESH"
+def _is_figure(self, obj):
+    # Edge meshes, and (issue 32) Grease Pencil objects, curves and texts.
+    return obj.type in FIGURE_TYPES
 
 
 class StickMorphSceneSettings(bpy.types.PropertyGroup):
@@ -38,10 +40,16 @@ class StickMorphSceneSettings(bpy.types.PropertyGroup):
         # The delay group (issue 31): picked in the Local Timing sub-panel
         # from the source's vertex groups.
         **mesh_option_properties(),
-        "source": PointerProperty(name="Source", type=bpy.types.Object, poll=_is_mesh, options=set(),
-                                  description="Edge mesh the morph starts from (empty: the selected non-active mesh)"),
-        "target": PointerProperty(name="Target", type=bpy.types.Object, poll=_is_mesh, options=set(),
-                                  description="Edge mesh the morph ends at (empty: the active object)"),
+        "source": PointerProperty(name="Source", type=bpy.types.Object, poll=_is_figure, options=set(),
+                                  description="Edge mesh, Grease Pencil object or curve the morph starts from "
+                                              "(empty: the selected non-active object)"),
+        "target": PointerProperty(name="Target", type=bpy.types.Object, poll=_is_figure, options=set(),
+                                  description="Edge mesh, Grease Pencil object or curve the morph ends at (empty: "
+                                              "the active object); may be the source's Grease Pencil object, "
+                                              "another layer or frame of it"),
+        # Which drawing of a Grease Pencil source and target (issue 32):
+        # the Drawing sub-panel.
+        **drawing_properties(),
         "frame_start": IntProperty(name="Start", description="Frame showing the source",
                                    default=_DEFAULTS.frame_start, options=set()),
         # Bake Key Poses (sequence_operators.py): where its keys come from and

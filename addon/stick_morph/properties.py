@@ -25,7 +25,15 @@ from . import common
 # no preference.
 OPTION_NAMES = ("motion", "correspondence", "rotation", "turns", "frame_count", "steiner", "weights",
                 "enclosure_sides", "plane", "easing", "renderable", "tube_radius", "show_triangulation",
-                "planarity_tolerance", "set_frame_range", "overlap")
+                "planarity_tolerance", "set_frame_range", "overlap", "output", "clean_tolerance")
+
+# Which drawing of a Grease Pencil source or target a pair bake reads (issue
+# 32), and whether its selected points are pins: like source and target,
+# choices of the pair's data, not options of the morph (no preference, not
+# in BakeSettings: drawing_io.drawing_choices reads them); the operator and
+# the scene settings have them (drawing_properties), the Drawing sub-panel
+# draws them.
+DRAWING_OPTIONS = ("source_layer", "source_frame", "target_layer", "target_frame", "pin_selected")
 
 # The options that name data of the meshes (issue 31's delay group, a vertex
 # group of the source): like frame_start, no preference (a default group
@@ -174,6 +182,22 @@ def option_properties():
             description="With a Delay Group: how far the parts of weight 1 lag those of weight 0, as a fraction "
                         "of the motion (0: no lag, the plain morph); Rigid motion only",
             default=defaults.overlap, options=set(), min=0.0, max=OVERLAP_MAX, subtype="FACTOR", precision=3),
+        # Drawings (issue 32).
+        "output": EnumProperty(
+            name="Output", description="What the bake makes",
+            items=(("AUTO", "Auto",
+                    "Grease Pencil for a Grease Pencil source, otherwise a mesh with shape keys (and its tube)"),
+                   ("MESH", "Mesh", "A mesh with one shape key per frame (and its tube with Renderable)"),
+                   ("GREASE_PENCIL", "Grease Pencil",
+                    "A Grease Pencil object with one drawing per frame, with the source's materials and "
+                    "stroke thickness (a mesh or curve source: black strokes of the Tube Radius)")),
+            default=defaults.output, options=set()),
+        "clean_tolerance": FloatProperty(
+            name="Clean Tolerance",
+            description="Grease Pencil and curve figures are cleaned into stick figures: stroke ends this close "
+                        "to a stroke snap onto it, crossings become junctions (the bake reports every change). "
+                        "A fraction of the drawing's size; 0: the default, 0.01. Meshes are not cleaned",
+            default=defaults.clean_tolerance, options=set(), min=0.0, max=0.2, soft_max=0.05, precision=4),
     }
 
 
@@ -187,6 +211,33 @@ def mesh_option_properties():
                         "weights say which parts lag: weight 0 leads, weight 1 lags by Overlap; vertices not in "
                         "the group weigh 0 (empty: every part on the same clock). Paint it in Weight Paint mode; "
                         "Rigid motion only"),
+    }
+
+
+def drawing_properties(options=frozenset()):
+    """Fresh definitions of DRAWING_OPTIONS (the pair bake and the scene
+    settings; not the preferences: they name the pair's data). options: the
+    properties' options (the operator's are SKIP_SAVE)."""
+    options = set(options)
+
+    def layer(role):
+        return StringProperty(
+            name=f"{role.title()} Layer", default="", options=options,
+            description=f"The Grease Pencil layer of the {role} to morph (empty: the active layer)")
+
+    def frame(role):
+        return IntProperty(
+            name=f"{role.title()} Frame", default=0, options=options,
+            description=f"The {role}'s drawing shown at this frame (its last keyframe at or before it); "
+                        "0: the drawing shown at the current frame")
+
+    return {
+        "source_layer": layer("source"), "source_frame": frame("source"),
+        "target_layer": layer("target"), "target_frame": frame("target"),
+        "pin_selected": BoolProperty(
+            name="Pin Selected Points", default=False, options=options,
+            description="Grease Pencil source and target: the selected points pin the matching, the first "
+                        "selected point of the source (in drawing order) to the first of the target, and so on"),
     }
 
 

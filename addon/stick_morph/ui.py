@@ -16,9 +16,9 @@ import textwrap
 
 import bpy
 
-from .common import StickMorphError, pin_names, property_applies
+from .common import GREASE_PENCIL_TYPES, StickMorphError, is_drawing_type, pin_names, property_applies
 from .helpers import dependency_status, edited_meshes, resolve_pair
-from .properties import MESH_OPTIONS, OPTION_NAMES, REBAKE_OPTIONS, SEQUENCE_OPTIONS
+from .properties import DRAWING_OPTIONS, MESH_OPTIONS, OPTION_NAMES, REBAKE_OPTIONS, SEQUENCE_OPTIONS
 
 # Longest label of a property-split row that 3.4's default sidebar shows in
 # full: "Weights" and "Steiner" were, "Enclos…" (Enclosure Sides) was not
@@ -38,8 +38,10 @@ FULL_LABEL_CHARS = 22
 # column); its values read after it: Match Automatic, By Index, By Shape.
 MAIN_SPLIT = (("motion", "Motion"), ("correspondence", "Match"), ("frame_start", "Start"),
               ("frame_count", "Frames"), ("plane", "Plane"), ("easing", "Easing"))
-MAIN_FULL = (("renderable", None), ("tube_radius", None), ("show_triangulation", None),
-             ("set_frame_range", None))
+# Output (issue 32) is a full row: "Grease Pencil" is too long for a
+# split row's value column.
+MAIN_FULL = (("output", "Output"), ("renderable", None), ("tube_radius", None), ("show_triangulation", None),
+             ("set_frame_range", None), ("clean_tolerance", None))
 # "Rotation" (8) and "Extra Turns" are too long for a split row.
 ADVANCED_SPLIT = (("rotation", "Rotate"), ("turns", "Turns"), ("steiner", "Steiner"), ("weights", "Weights"))
 ADVANCED_FULL = (("enclosure_sides", None),)
@@ -54,10 +56,27 @@ LOCAL_TIMING = (("delay_group", "Delay Group"), ("overlap", None))
 # False, still editable, as Blender greys out settings that have no effect)
 # when the data's motion is not one of them, by the engine's own rule of
 # which option applies to which method (native.option_methods).
+def pair_objects(data):
+    """The source and target objects a bake with data (the scene settings or
+    an operator's properties) would use, or None where they cannot be told."""
+    def named(value):
+        return value if not isinstance(value, str) else bpy.data.objects.get(value) if value else None
+
+    try:
+        source, target = named(getattr(data, "source", None)), named(getattr(data, "target", None))
+        return resolve_pair(bpy.context, source.name if source else "", target.name if target else "")
+    except (StickMorphError, AttributeError):
+        return None
+
+
 def row_active(data, name):
     """Whether the option `name` has an effect with the other options of data."""
     if name == "tube_radius":
         return bool(getattr(data, "renderable", True))
+    if name == "clean_tolerance":
+        # Only drawings are cleaned; where the pair is not known yet it may be.
+        pair = pair_objects(data)
+        return pair is None or any(is_drawing_type(obj.type) for obj in pair)
     if name == "overlap" and not getattr(data, "delay_group", ""):
         return False  # no delay group: nothing lags
     return property_applies(name, getattr(data, "motion", "RIGID"), _option_methods())
@@ -202,6 +221,37 @@ def delay_group_problem(owner, name):
     return None
 
 
+# The Drawing sub-panel (issue 32): which layer and frame of a Grease Pencil
+# source and target, and its pins. (property, label) rows, full width.
+DRAWING_ROWS = (("source_layer", "Layer"), ("source_frame", "Frame"), ("target_layer", "Layer"),
+                ("target_frame", "Frame"), ("pin_selected", None))
+
+
+def draw_drawing_rows(layout, data, pair):
+    """The Drawing rows of data (scene settings or the operator) for the
+    pair (source, target) or None: a role's layer (a search over its Grease
+    Pencil layers) and frame greyed out unless it is a Grease Pencil object,
+    Pin Selected Points unless both are."""
+    column = layout.column()
+    column.use_property_split = False
+    column.use_property_decorate = False
+    pencils = [obj if obj is not None and obj.type in GREASE_PENCIL_TYPES else None for obj in (pair or (None, None))]
+    for role, obj in zip(("source", "target"), pencils):
+        column.label(text=f"{role.title()}: '{obj.name}'" if obj is not None else f"{role.title()}: not Grease Pencil")
+        row = column.row()
+        row.active = obj is not None or pair is None
+        if obj is not None:
+            row.prop_search(data, f"{role}_layer", obj.data, "layers", text="Layer")
+        else:
+            row.prop(data, f"{role}_layer", text="Layer")
+        row = column.row()
+        row.active = obj is not None or pair is None
+        row.prop(data, f"{role}_frame", text="Frame")
+    row = column.row()
+    row.active = pair is None or all(obj is not None for obj in pencils)
+    row.prop(data, "pin_selected")
+
+
 def draw_rows(layout, data, split_rows, full_rows, labelled_rows=()):
     column = layout.column()
     column.use_property_split = True
@@ -254,7 +304,7 @@ class VIEW3D_PT_stick_morph(bpy.types.Panel):
         op.source = settings.source.name if settings.source else ""
         op.target = settings.target.name if settings.target else ""
         op.frame_start = settings.frame_start
-        for name in OPTION_NAMES + MESH_OPTIONS:
+        for name in OPTION_NAMES + MESH_OPTIONS + DRAWING_OPTIONS:
             setattr(op, name, getattr(settings, name))
         draw_sequence_buttons(layout.column(align=True), settings)
 
@@ -321,6 +371,24 @@ class VIEW3D_PT_stick_morph_local_timing(bpy.types.Panel):
             _label_lines(layout, context, "Weight 0 leads, weight 1 lags by Overlap (Weight Paint mode)")
 
 
+class VIEW3D_PT_stick_morph_drawing(bpy.types.Panel):
+    """Grease Pencil source and target: which layer and frame, and pins from selected points"""
+    bl_label = "Drawing"
+    bl_idname = "VIEW3D_PT_stick_morph_drawing"
+    bl_space_type = "VIEW_3D"
+    bl_region_type = "UI"
+    bl_category = "Stick Morph"
+    bl_parent_id = "VIEW3D_PT_stick_morph"
+    bl_options = {"DEFAULT_CLOSED"}
+
+    def draw(self, context):
+        layout = self.layout
+        layout.use_property_decorate = False
+        settings = context.scene.stick_morph
+        draw_drawing_rows(layout, settings, pair_objects(settings))
+        _label_lines(layout, context, "Layer empty: the active one; Frame 0: the drawing shown now")
+
+
 class VIEW3D_PT_stick_morph_advanced(bpy.types.Panel):
     """Expert options: how the compatible triangulation and the morph are built"""
     bl_label = "Advanced"
@@ -346,6 +414,12 @@ def draw_operator(layout, op):
     column.prop(op, "source")
     column.prop(op, "target")
     draw_rows(layout, op, MAIN_SPLIT, MAIN_FULL)
+    # The Drawing rows only for a pair with a Grease Pencil drawing or a
+    # curve: a pair of meshes has no layers or frames to choose.
+    pair = pair_objects(op)
+    if pair is not None and any(is_drawing_type(obj.type) for obj in pair):
+        layout.label(text="Drawing")
+        draw_drawing_rows(layout, op, pair)
     layout.label(text="Local Timing")
     draw_local_timing(layout, op, operator_delay_owner(op))
     layout.label(text="Advanced")
@@ -415,8 +489,8 @@ def draw_key_pose_operator(layout, op, fields, toggles, options):
     draw_rows(layout, op, ADVANCED_SPLIT, ADVANCED_FULL, ADVANCED_LABELLED)
 
 
-classes = (VIEW3D_PT_stick_morph, VIEW3D_PT_stick_morph_pins, VIEW3D_PT_stick_morph_local_timing,
-           VIEW3D_PT_stick_morph_key_poses, VIEW3D_PT_stick_morph_advanced)
+classes = (VIEW3D_PT_stick_morph, VIEW3D_PT_stick_morph_drawing, VIEW3D_PT_stick_morph_pins,
+           VIEW3D_PT_stick_morph_local_timing, VIEW3D_PT_stick_morph_key_poses, VIEW3D_PT_stick_morph_advanced)
 
 
 register, unregister = bpy.utils.register_classes_factory(classes)
