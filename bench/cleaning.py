@@ -15,20 +15,26 @@ bounding-box diagonal) and this script checks:
               bench/correspondence_check.py's plane_problems): no two edges cross or overlap, no
               vertex lies on an edge that does not end at it, no two vertices coincide; no edge
               from a vertex to itself and none twice
+  limits      every merge moved its point by at most the merge distance (tolerance / 100) and
+              every snap moved a free end (the first or last point of an open stroke) by at most
+              the tolerance, as `stickmorph clean --help` says
   accounted   every change is reported: each input point lands on its vertex (point_vertices)
               exactly where it was drawn, unless a merge or snap change names that stroke and
               point with the distance it moved (within 1e-12, relative) and `at` its vertex; every
               merge and snap change says how far its point really moved; each stroke's path
-              (cleaning.strokes) runs along the figure's edges and every edge lies on a path; the
+              (cleaning.strokes) runs along the figure's edges and every edge lies on a path (on two
+              only if it is within the tolerance: counted, snapping makes that of strokes meeting
+              at a shallow angle; longer, the strokes run along each other); the
               path passes through its points' vertices in order, and any vertex between two of
-              them lies on the segment between them (within 1e-9 of the size: a crossing's point
-              rounded; or, at a vertex where a change names the stroke, within the merge distance,
-              tolerance / 100: a crossing that fell that close to another stroke's point is put on
-              the point and this stroke bends through it, counted as a *bend*, not a failure); every
-              vertex that two strokes share, or one stroke at two places that are not neighbours
-              along it, is explained for each of those strokes by a crossing,
-              touch, snap or merge change at that vertex naming the stroke, or by an input point of
-              that stroke drawn exactly there; the summary counts are the changes' counts
+              them lies on their segment as drawn or between where they went when one of them
+              moved (within 1e-9 of the size: a crossing's point rounded). Not a failure but
+              counted, a *bend*: a vertex where a change names the stroke within the merge distance
+              (tolerance / 100) of the segment, a crossing that fell that close to another stroke's
+              point put on that point. Every vertex that two strokes share, or one stroke at two
+              places that are not neighbours along it, is explained for each of those strokes by a
+              crossing, touch, snap or merge change at that vertex naming the stroke, or by an
+              input point of that stroke drawn exactly there; the summary counts are the changes'
+              counts
   found       the planted defects against the manifest: a gap is closed when the end's vertex is on
               the stroke it stopped short of (however the engine did it: the end snapped, or the
               other stroke's end snapped onto it); a crossing when one vertex within 2/10000 of the
@@ -191,9 +197,10 @@ def path_steps(path, cyclic):
     return steps
 
 
-def accounting_problems(drawing, doc, size, bends=None):
+def accounting_problems(drawing, doc, size, bends=None, shared_edges=None):
     """Whether every change is reported (the module docstring's "accounted"). `bends` gets the
-    strokes bent through a junction within the merge distance (path_order_problems)."""
+    strokes bent through a junction within the merge distance (path_order_problems), `shared_edges`
+    the edges on two strokes' paths that are within the tolerance."""
     vertices, edges = figure_of(doc)
     c = doc["cleaning"]
     changes = c["changes"]
@@ -261,9 +268,16 @@ def accounting_problems(drawing, doc, size, bends=None):
     unused = [e for e in edges if frozenset(e) not in used]
     if unused:
         add(f"edges {unused[:5]} ({len(unused)}) lie on no stroke's path")
+    # Two strokes along one edge: an overlap, unless the edge is within the tolerance (snapping and
+    # merging make that of two strokes meeting at a shallow angle; the engine keeps it, once)
+    tol = float(c["tolerance"])
     twice = {tuple(sorted(k)): v for k, v in used.items() if len(v) > 1}
-    if twice:
-        add(f"edges on two paths (strokes along each other): {list(twice.items())[:5]}")
+    long_twice = {k: v for k, v in twice.items() if math.dist(vertices[k[0]], vertices[k[1]]) > tol}
+    if long_twice:
+        add(f"edges longer than the tolerance on two paths (strokes along each other): "
+            f"{list(long_twice.items())[:5]}")
+    if shared_edges is not None:
+        shared_edges.extend(k for k in twice if k not in long_twice)
     # shared vertices explained
     if stray:
         add(f"changes {stray[:5]} are at no vertex of the figure")
@@ -308,6 +322,33 @@ def accounting_problems(drawing, doc, size, bends=None):
     return problems
 
 
+def limit_problems(drawing, doc):
+    """The contract's limits (`stickmorph clean --help`): a merge moves a point by at most the merge
+    distance (tolerance / 100), a snap moves a free end (the first or last point of a stroke that is
+    not cyclic, or a point drawn exactly there) by at most the tolerance."""
+    c = doc["cleaning"]
+    tol = float(c["tolerance"])
+    problems = []
+    for ch in c["changes"]:
+        i, j = ch["stroke"], ch.get("point")
+        if ch["kind"] == "merge" and float(ch["distance"]) > tol * MERGE_FRACTION * (1 + 1e-9):
+            problems.append(f"point {j} of stroke {i} merged {ch['distance']:.6g} away ({ch['distance'] / tol:.3g} "
+                            f"tolerances; merges are within {MERGE_FRACTION} tolerance) into stroke "
+                            f"{ch.get('other_stroke')}'s vertex at {ch['at']}")
+        if ch["kind"] == "snap":
+            if float(ch["distance"]) > tol * (1 + 1e-9):
+                problems.append(f"point {j} of stroke {i} snapped {ch['distance']:.6g} ({ch['distance'] / tol:.3g} "
+                                f"tolerances) onto stroke {ch.get('other_stroke')}")
+            points, cyclic = drawing[i]
+            if j is not None and (cyclic or points[j] not in (points[0], points[-1])):
+                kind = ", cyclic" if cyclic else ""
+                problems.append(f"point {j} of stroke {i} (of {len(points)}{kind}) snapped onto stroke "
+                                f"{ch.get('other_stroke')} by {ch['distance']:.6g}: it is no free end")
+        if len(problems) >= MAX_PROBLEMS:
+            break
+    return problems
+
+
 def not_neighbours(places):
     """Whether a stroke's places (position, path length, cyclic) at one vertex include two that are
     not next to each other along the path (a loop closed, a crossing of the stroke with itself)."""
@@ -333,16 +374,24 @@ def not_neighbours(places):
 def path_order_problems(i, points, cyclic, pv, path, path_cyclic, vertices, size, named_at=None, merge=0.0,
                         bends=None):
     """The path passes through its points' vertices in order; what lies between two of them lies
-    on the segment between them (of the cleaned figure), in order along it. Except: a junction
+    on the segment between them, as drawn or as cleaned, in order along it. Except: a junction
     within the merge distance of the segment, at a vertex where a change names this stroke (a
     crossing put on another stroke's point that was that close: the stroke bends through it);
     those go to `bends` as (stroke, vertex, distance)."""
-    seq = [pv[0]]
-    for v in pv[1:]:
-        if v != seq[-1]:
-            seq.append(v)
-    if cyclic and len(seq) > 1 and seq[-1] == seq[0]:
-        seq.pop()
+    # runs of points on one vertex: (vertex, first input point, last input point)
+    runs = [[pv[0], 0, 0]]
+    for j, v in enumerate(pv[1:], 1):
+        if v != runs[-1][0]:
+            runs.append([v, j, j])
+        else:
+            runs[-1][2] = j
+    if cyclic and len(runs) > 1 and runs[-1][0] == runs[0][0]:
+        runs.pop()
+    seq = [r[0] for r in runs]
+    drawn = {}  # (vertex a, vertex b) of consecutive runs: the drawn segment between them
+    closing = runs + ([runs[0]] if cyclic or path_cyclic else [])
+    for r0, r1 in zip(closing, closing[1:]):
+        drawn.setdefault((r0[0], r1[0]), (points[r0[2]], points[r1[1]]))
     walk = list(path)
     if path_cyclic and walk:
         if seq[0] in walk:
@@ -361,26 +410,33 @@ def path_order_problems(i, points, cyclic, pv, path, path_cyclic, vertices, size
             pos += 1
         if pos >= len(walk):
             return [f"stroke {i}'s path does not pass through its points' vertices in order (vertex {b} after {a})"]
-        pa, pb = np.array(vertices[a]), np.array(vertices[b])
-        d = pb - pa
-        dd = float(d @ d)
-        last_t = 0.0
+        # A vertex put between the two points lies on their segment: as drawn, or between where
+        # they went when one of them moved (a reported merge or snap)
+        segments = [np.array(drawn.get((a, b), (vertices[a], vertices[b])), dtype=float),
+                    np.array([vertices[a], vertices[b]], dtype=float)]
+        last_t = [0.0, 0.0]
         for v in walk[start + 1:pos]:
             q = np.array(vertices[v])
-            t = float((q - pa) @ d / dd) if dd > 0 else 0.0
-            off = float(np.hypot(*(pa + t * d - q)))
-            if off > ON_SEGMENT * size and off <= merge * (1 + 1e-9) and last_t < t < 1.0 \
+            fits = []
+            for pa, pb in segments:
+                d = pb - pa
+                dd = float(d @ d)
+                t = float((q - pa) @ d / dd) if dd > 0 else 0.0
+                fits.append((float(np.hypot(*(pa + t * d - q))), t))
+            k = 0 if fits[0][0] <= fits[1][0] else 1
+            off, t = fits[k]
+            if off > ON_SEGMENT * size and off <= merge * (1 + 1e-9) and last_t[k] < t < 1.0 \
                     and i in (named_at or {}).get(v, set()):
                 if bends is not None:
                     bends.append((i, v, off))
-                last_t = t
+                last_t[k] = t
                 continue
-            if off > ON_SEGMENT * size or not last_t < t < 1.0:
+            if off > ON_SEGMENT * size or not last_t[k] < t < 1.0:
                 problems.append(f"stroke {i}: vertex {v} at {list(vertices[v])} on its path between the vertices of "
                                 f"two consecutive points ({a}, {b}) is off their segment by {off / size:.3g} of the "
                                 f"size (t = {t:.6g})")
                 break
-            last_t = t
+            last_t[k] = t
     if pos != len(walk) - 1:
         problems.append(f"stroke {i}'s path goes on past its last point's vertex ({walk[pos + 1:][:5]})")
     return problems[:MAX_PROBLEMS]
@@ -594,8 +650,13 @@ def check_drawing(cli, corpus, entry, work):
     if exact:
         row["problems"].setdefault("valid", []).extend(exact)
     # (b) every change reported
-    bends = []
-    accounting = accounting_problems(drawing, doc, size, bends)
+    limits = limit_problems(drawing, doc)
+    row["within_limits"] = not limits
+    if limits:
+        row["problems"]["limits"] = limits
+    bends, shared = [], []
+    accounting = accounting_problems(drawing, doc, size, bends, shared)
+    row["shared_edges"] = len(shared)
     row["accounted"] = not accounting
     row["bends"] = [{"stroke": i, "vertex": v, "distance": d, "of_merge": d / (float(c["tolerance"]) * MERGE_FRACTION)}
                     for i, v, d in bends]
@@ -744,6 +805,7 @@ def summarize(rows, pairs, refusals):
              "extra_crossings": sum(len(r["extra_crossings"]) for r in done),
              "stubs": sum(len(r.get("stubs", [])) for r in done),
              "stub_drawings": sum(1 for r in done if r.get("stubs")),
+             "shared_edges": sum(r.get("shared_edges", 0) for r in done),
              "bends": sum(len(r.get("bends", [])) for r in done),
              "bent_drawings": sum(1 for r in done if r.get("bends")),
              "bend_max_of_merge": max((b["of_merge"] for r in done for b in r.get("bends", [])), default=None),
@@ -751,6 +813,7 @@ def summarize(rows, pairs, refusals):
              "valid_cli": sum(1 for r in done if r.get("valid_cli")),
              "valid_exact": sum(1 for r in done if r.get("valid_exact")),
              "accounted": sum(1 for r in done if r.get("accounted")),
+             "within_limits": sum(1 for r in done if r.get("within_limits", True)),
              "idempotent": sum(1 for r in done if r.get("idempotent")),
              "idempotent_default": sum(1 for r in done if r.get("idempotent_default")),
              "seconds": round(sum(r["seconds"] for r in rs), 3),
@@ -820,8 +883,10 @@ def print_report(summary, pairs, refusals, stream=sys.stdout):
           f"{s['found']['crossings']}, reported as crossings at their vertex {s['found']['crossings_reported']}; "
           f"snaps of ends the manifest has as free {s['extra_snaps']}, crossings it does not have "
           f"{s['extra_crossings']}; free ends less than the tolerance from a junction {s['stubs']} (in "
-          f"{s['stub_drawings']} drawings); strokes bent through a junction within the merge distance {s['bends']} (in "
+          f"{s['stub_drawings']} drawings); edges within the tolerance on two strokes' paths {s['shared_edges']}; "
+          f"strokes bent through a junction within the merge distance {s['bends']} (in "
           f"{s['bent_drawings']} drawings, at most {fmt(s['bend_max_of_merge'], '{:.2f}')} of the merge distance); "
+          f"merges and snaps within their limits {s['within_limits']}/{s['drawings']}; "
           f"valid by `check` {s['valid_cli']}, exactly {s['valid_exact']}; idempotent with the "
           f"default tolerance {s['idempotent_default']}/{s['drawings']}; slowest clean {s['seconds_max']:.3f} s",
           file=stream)

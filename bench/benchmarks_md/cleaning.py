@@ -196,6 +196,8 @@ def cleaning_section(doc, out_path, plot_dir):
                     ["---"] + ["--:"] * 12))
     notes = [f"crossings reported as crossings at their vertex: {a['found']['crossings_reported']}/"
              f"{a['found']['crossings']}",
+             f"merges within the merge distance and snaps of free ends within the tolerance: "
+             f"{a.get('within_limits', a['drawings'])}/{a['drawings']}",
              f"snaps of ends the manifest has as free: {a['extra_snaps']}",
              f"crossings it does not have: {a['extra_crossings']}",
              f"free ends less than the tolerance from a junction (stubs the cleaning left): {a.get('stubs', 0)}",

@@ -49,7 +49,8 @@ def test_analyse_refuses_overlaps_and_retraces_and_skips_duplicates():
 
 
 def test_a_star_drawn_in_one_stroke_crosses_itself_five_times():
-    tips = [(math.cos(math.pi / 2 + 4 * math.pi * k / 5), math.sin(math.pi / 2 + 4 * math.pi * k / 5)) for k in range(5)]
+    angles = [math.pi / 2 + 4 * math.pi * k / 5 for k in range(5)]
+    tips = [(math.cos(a), math.sin(a)) for a in angles]
     found = dc.analyse([(tips, True)])
     assert len(found["crossings"]) == 5 and all(c[0] == c[2] == 0 for c in found["crossings"])
 
@@ -223,6 +224,31 @@ def test_idempotence_problems_say_what_changed():
     second["cleaning"].update(junctions_made=0, ends_snapped=0, points_merged=0)
     assert cl.idempotence_problems(first, second) == [
         "the figure changed: 8 -> 8 vertices, 7 -> 7 edges (the same geometry, numbered otherwise)"]
+
+
+def test_merges_and_snaps_beyond_their_limits_are_caught():
+    doc = cleaned()
+    assert cl.limit_problems(DRAWING, doc) == []
+    doc["cleaning"]["changes"][2]["distance"] = 0.06  # a snap beyond the tolerance
+    assert any("snapped 0.06 (1.2 tolerances)" in p for p in cl.limit_problems(DRAWING, doc))
+    doc = cleaned()
+    doc["cleaning"]["changes"][0]["distance"] = 0.001  # a merge beyond tolerance / 100 (0.0005)
+    assert any("merged 0.001 away" in p for p in cl.limit_problems(DRAWING, doc))
+    doc = cleaned()
+    doc["cleaning"]["changes"][2]["point"] = 0  # stroke 2's first point: a free end, allowed
+    assert cl.limit_problems(DRAWING, doc) == []
+    doc["cleaning"]["changes"].append({"kind": "snap", "stroke": 0, "point": 1, "other_stroke": 1, "at": [2.0, 0.0],
+                                       "distance": 0.0})
+    assert any("point 1 of stroke 0 (of 4) snapped onto stroke 1 by 0: it is no free end" in p
+               for p in cl.limit_problems(DRAWING, doc))
+
+
+def test_an_edge_on_two_paths_is_counted_within_the_tolerance_and_fails_beyond():
+    doc = cleaned()
+    doc["cleaning"]["strokes"][1]["vertices"] = [3, 7, 4]
+    doc["cleaning"]["strokes"][2]["vertices"] = [5, 6, 1, 6]  # stroke 2 along stroke 0's edge 1-6 (length 1)
+    problems = cl.accounting_problems(DRAWING, doc, SIZE)
+    assert any("edges longer than the tolerance on two paths" in p for p in problems)
 
 
 def test_short_stubs_neighbours_and_names():
