@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <map>
@@ -389,21 +390,29 @@ bool Cleaner::join() {
   std::vector<Segment> geometry(refs.size());
   std::vector<std::pair<int, int>> ends(refs.size());
   std::map<std::pair<int, int>, int> by_vertices;
+  std::vector<bool> repeated(refs.size(), false);  // an edge another path already has
   for (std::size_t i = 0; i < refs.size(); ++i) {
     ends[i] = segment_vertices(refs[i]);
     geometry[i] = {position_[std::size_t(ends[i].first)], position_[std::size_t(ends[i].second)]};
     const auto key = std::minmax(ends[i].first, ends[i].second);
     const auto [it, fresh] = by_vertices.emplace(key, int(i));
+    if (fresh) continue;
     // The same two vertices joined twice: the strokes run along each other
-    // for the whole edge (or a stroke goes there and back).
-    if (!fresh) fail_overlap(refs[std::size_t(it->second)], refs[i], geometry[i][0], geometry[i][1]);
+    // for the whole edge (or a stroke goes there and back). Within the
+    // tolerance that is what snapping and merging make of two strokes that
+    // meet at a shallow angle (a crossing a hair from a junction merges into
+    // it): they share that edge, which the figure has once. Longer, it was
+    // drawn so.
+    if (distance(geometry[i][0], geometry[i][1]) > tolerance_)
+      fail_overlap(refs[std::size_t(it->second)], refs[i], geometry[i][0], geometry[i][1]);
+    repeated[i] = true;
   }
   // Per segment, the vertices to insert into it; per pair of segments one
   // crossing at most (two segments meet in one point unless collinear).
   std::vector<std::vector<int>> inserts(refs.size());
   std::vector<std::pair<int, int>> pairs;
   for_each_overlapping_box(geometry, geometry, [&](int i, int j) {
-    if (i < j) pairs.emplace_back(i, j);
+    if (i < j && !repeated[std::size_t(i)] && !repeated[std::size_t(j)]) pairs.emplace_back(i, j);
   });
   std::sort(pairs.begin(), pairs.end());
   std::set<std::pair<int, int>> touched;  // (segment, vertex) already recorded
@@ -493,131 +502,383 @@ bool Cleaner::join() {
   return any;
 }
 
-// Free ends within the tolerance of a stroke move onto it. Returns whether
+// Free ends within the tolerance of a stroke move onto it (an end that
+// stopped short, or overshot by less than the tolerance). Returns whether
 // any did.
+//
+// An end's *tail* is the run of its stroke's last vertices that all lie
+// within the tolerance of other strokes (or of a far part of its own). Where
+// the tail crosses what it runs along, or runs along it for
+// kTrimTolerances or more (a ring closed past its start, a stroke drawn on
+// over the end of another), the tail is an overlap the artist did not mean
+// as a shape: its inner end snaps and the rest merges into that junction.
+// Otherwise only the end itself snaps. Without this, the jitter of such an
+// overlap makes little loops whose number differs from drawing to drawing,
+// and two poses of one figure would not match (figure_correspondence.h).
 bool Cleaner::snap() {
   if (tolerance_ <= 0) return false;
   const std::vector<SegmentRef> refs = segments();
-  // The graph of the drawing: unique edges, adjacency, degrees.
+  const double t = tolerance_;
   std::unordered_map<int, std::vector<int>> neighbours;
-  std::vector<Segment> geometry(refs.size());
   std::vector<std::pair<int, int>> ends(refs.size());
   for (std::size_t i = 0; i < refs.size(); ++i) {
     ends[i] = segment_vertices(refs[i]);
-    geometry[i] = {position_[std::size_t(ends[i].first)], position_[std::size_t(ends[i].second)]};
     neighbours[ends[i].first].push_back(ends[i].second);
     neighbours[ends[i].second].push_back(ends[i].first);
   }
-  // Free ends: the first and last vertex of an open stroke, if no other edge
-  // meets them. In stroke order, first end before last.
+  // Two strokes may share an edge (join() keeps a short one): count it once.
+  for (auto& [vertex, list] : neighbours) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
   struct FreeEnd {
-    int vertex, stroke, point;
+    int stroke;
+    bool back;  // the path's last entry (else its first)
   };
   std::vector<FreeEnd> free_ends;
   for (std::size_t s = 0; s < paths_.size(); ++s) {
     if (in_.cyclic[s] || paths_[s].size() < 2) continue;
-    for (const PathEntry* e : {&paths_[s].front(), &paths_[s].back()})
-      if (neighbours[e->vertex].size() == 1) free_ends.push_back({e->vertex, int(s), e->point});
+    if (neighbours[paths_[s].front().vertex].size() == 1) free_ends.push_back({int(s), false});
+    if (neighbours[paths_[s].back().vertex].size() == 1) free_ends.push_back({int(s), true});
   }
   if (free_ends.empty()) return false;
-  const double t = tolerance_;
-  std::vector<Segment> squares;
-  for (const FreeEnd& end : free_ends) {
-    const Vec2& p = position_[std::size_t(end.vertex)];
-    squares.push_back({Vec2{p[0] - t, p[1] - t}, Vec2{p[0] + t, p[1] + t}});
-  }
-  std::vector<std::vector<int>> candidates(free_ends.size());
-  for_each_overlapping_box(squares, geometry, [&](int e, int g) { candidates[std::size_t(e)].push_back(g); });
 
-  struct Snap {
-    std::size_t end;
-    int segment;   // the segment snapped onto
-    int vertex;    // snap onto this vertex of it, or -1: onto `at` inside it
-    Vec2 at;
+  // A uniform grid of the segments, cells of the tolerance (at least a
+  // millionth of the drawing, so that the grid stays small), for the
+  // "what is within the tolerance of this point" queries of the tail walks.
+  double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  double hi[2] = {-lo[0], -lo[1]};
+  for (const auto& path : paths_)
+    for (const PathEntry& e : path)
+      for (int axis = 0; axis < 2; ++axis) {
+        lo[axis] = std::min(lo[axis], position_[std::size_t(e.vertex)][std::size_t(axis)]);
+        hi[axis] = std::max(hi[axis], position_[std::size_t(e.vertex)][std::size_t(axis)]);
+      }
+  const double cell = std::max({t, (hi[0] - lo[0]) * 1e-6, (hi[1] - lo[1]) * 1e-6});
+  const auto cell_of = [&](double value, int axis) { return std::int64_t(std::floor((value - lo[axis]) / cell)); };
+  std::unordered_map<std::int64_t, std::vector<int>> grid;
+  const std::int64_t columns = cell_of(hi[0], 0) + 3;
+  const auto key = [columns](std::int64_t x, std::int64_t y) { return (y + 1) * columns + (x + 1); };
+  for (std::size_t i = 0; i < refs.size(); ++i) {
+    const Vec2 &a = position_[std::size_t(ends[i].first)], &b = position_[std::size_t(ends[i].second)];
+    for (std::int64_t y = cell_of(std::min(a[1], b[1]), 1); y <= cell_of(std::max(a[1], b[1]), 1); ++y)
+      for (std::int64_t x = cell_of(std::min(a[0], b[0]), 0); x <= cell_of(std::max(a[0], b[0]), 0); ++x)
+        grid[key(x, y)].push_back(int(i));
+  }
+  // The segments within the tolerance's box of p.
+  const auto near = [&](const Vec2& p) {
+    std::vector<int> found;
+    for (std::int64_t y = cell_of(p[1] - t, 1); y <= cell_of(p[1] + t, 1); ++y)
+      for (std::int64_t x = cell_of(p[0] - t, 0); x <= cell_of(p[0] + t, 0); ++x) {
+        const auto it = grid.find(key(x, y));
+        if (it != grid.end()) found.insert(found.end(), it->second.begin(), it->second.end());
+      }
+    std::sort(found.begin(), found.end());
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    return found;
   };
-  std::vector<Snap> snaps;
-  for (std::size_t e = 0; e < free_ends.size(); ++e) {
-    if (candidates[e].empty()) continue;
-    const int v = free_ends[e].vertex;
-    const Vec2 p = position_[std::size_t(v)];
-    // What lies within kSnapExclusionTolerances along the drawing from the
-    // end is its own stroke or one it already crosses: not a snap target.
+  // What lies within kSnapExclusionTolerances along the drawing from v: its
+  // own stroke just behind it, or a stroke it already meets there.
+  const auto reached_from = [&](int v, std::unordered_set<int>& reached) {
     const double reach = kSnapExclusionTolerances * t;
-    std::unordered_map<int, double> reached{{v, 0.0}};
+    std::unordered_map<int, double> best{{v, 0.0}};
     using Item = std::pair<double, int>;
     std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
     queue.push({0.0, v});
     while (!queue.empty()) {
       const auto [d, u] = queue.top();
       queue.pop();
-      if (d > reached[u]) continue;
+      if (d > best[u]) continue;
+      reached.insert(u);
       for (int w : neighbours[u]) {
         const double dw = d + distance(position_[std::size_t(u)], position_[std::size_t(w)]);
         if (dw >= reach) continue;
-        const auto it = reached.find(w);
-        if (it != reached.end() && it->second <= dw) continue;
-        reached[w] = dw;
+        const auto it = best.find(w);
+        if (it != best.end() && it->second <= dw) continue;
+        best[w] = dw;
         queue.push({dw, w});
       }
     }
-    int best = -1;
-    double best_distance = std::numeric_limits<double>::infinity();
-    Vec2 best_at{};
-    std::sort(candidates[e].begin(), candidates[e].end());
-    for (int g : candidates[e]) {
-      const auto [a, b] = ends[std::size_t(g)];
-      if (reached.count(a) || reached.count(b)) continue;
-      const Vec2 q = nearest_on_segment(p, position_[std::size_t(a)], position_[std::size_t(b)]);
-      const double d = distance(p, q);
-      if (d <= t && d < best_distance) best = g, best_distance = d, best_at = q;
+  };
+  // The first input point of each vertex, to name merged tail points.
+  std::unordered_map<int, int> first_point;
+  for (std::size_t p = 0; p < point_vertex_.size(); ++p) first_point.emplace(find(point_vertex_[p]), int(p));
+
+  struct Snap {
+    FreeEnd end;
+    int trimmed;   // how many tail entries merge into the snapping one (a zip: how many zip)
+    int segment;   // the segment snapped onto (-1 for a zip)
+    int vertex;    // onto this vertex of it, or -1: onto `at` inside it
+    Vec2 at;
+    std::vector<int> zip_onto;     // a zip: per run vertex, the branch vertex it merges into
+    std::vector<int> zip_strokes;  // and that branch's stroke
+  };
+  std::vector<Snap> snaps;
+  for (const FreeEnd& end : free_ends) {
+    const auto& path = paths_[std::size_t(end.stroke)];
+    const int m = int(path.size()) - 1;
+    const auto entry = [&](int k) { return path[std::size_t(end.back ? m - k : k)].vertex; };
+    // Walk the tail: e_0 (the end), e_1, ... while each lies within the
+    // tolerance of something it is not attached to. Never the stroke's
+    // other end, never through a junction.
+    struct Near {
+      int segment;
+      Vec2 at;
+      std::vector<int> others;  // the segments it was measured against
+    };
+    std::vector<Near> tail;
+    std::unordered_set<int> tail_vertices;
+    for (int k = 0; k < m; ++k) {
+      const int v = entry(k);
+      if (k > 0 && neighbours[v].size() != 2) break;
+      tail_vertices.insert(v);
+      std::unordered_set<int> excluded = tail_vertices;
+      reached_from(v, excluded);
+      const Vec2 p = position_[std::size_t(v)];
+      int best = -1;
+      double best_distance = std::numeric_limits<double>::infinity();
+      Vec2 best_at{};
+      std::vector<int> others;
+      for (int g : near(p)) {
+        const auto [a, b] = ends[std::size_t(g)];
+        if (excluded.count(a) || excluded.count(b)) continue;
+        others.push_back(g);
+        const Vec2 q = nearest_on_segment(p, position_[std::size_t(a)], position_[std::size_t(b)]);
+        const double d = distance(p, q);
+        if (d <= t && d < best_distance) best = g, best_distance = d, best_at = q;
+      }
+      if (best < 0) break;
+      tail.push_back({best, best_at, std::move(others)});
     }
-    if (best < 0) continue;
-    // Onto the segment's nearer end if the foot of the perpendicular is
-    // within a quarter tolerance of it: a new vertex that close would leave
-    // a sliver edge, which the morph's triangulation pays for (issue 32's
-    // tail: slivers force blending).
-    const auto [a, b] = ends[std::size_t(best)];
-    const double da = distance(best_at, position_[std::size_t(a)]), db = distance(best_at, position_[std::size_t(b)]);
-    const int nearer = da <= db ? a : b;
-    if (std::min(da, db) <= 0.25 * t && distance(p, position_[std::size_t(nearer)]) <= t)
-      snaps.push_back({e, best, nearer, position_[std::size_t(nearer)]});
-    else
-      snaps.push_back({e, best, -1, best_at});
+    if (tail.empty()) continue;
+    const int K = int(tail.size());
+    // Zip: the tail and the rest of its run (up to a junction J) lie along
+    // another branch of J, within the tolerance, vertex by vertex: a ring
+    // closed past its start whose end already landed on one of its first
+    // points leaves its start dangling along its end that way. The whole run
+    // merges into that branch, each vertex into the branch's nearest vertex,
+    // and the stroke now starts at J.
+    {
+      std::vector<int> onto;
+      std::vector<int> onto_stroke;
+      std::unordered_set<int> run;
+      int k = 0;
+      bool zipped = false;
+      for (; k < m; ++k) {
+        const int v = entry(k);
+        if (k > 0 && neighbours[v].size() >= 3) {
+          zipped = true;
+          break;
+        }
+        if (k > 0 && neighbours[v].size() != 2) break;
+        run.insert(v);
+        const Vec2 p = position_[std::size_t(v)];
+        int best = -1, best_stroke = -1;
+        double best_distance = std::numeric_limits<double>::infinity();
+        for (int g : near(p)) {
+          const auto [a, b] = ends[std::size_t(g)];
+          if (run.count(a) || run.count(b) || a == entry(k + 1) || b == entry(k + 1)) continue;
+          const double d = distance(p, nearest_on_segment(p, position_[std::size_t(a)], position_[std::size_t(b)]));
+          if (d > t) continue;
+          for (int w : {a, b}) {
+            const double dw = distance(p, position_[std::size_t(w)]);
+            if (dw < best_distance) best = w, best_stroke = refs[std::size_t(g)].stroke, best_distance = dw;
+          }
+        }
+        if (best < 0) break;
+        onto.push_back(best);
+        onto_stroke.push_back(best_stroke);
+      }
+      if (zipped && k >= 1) {
+        // The branch must lead into J where the run does.
+        const int junction = entry(k);
+        const auto& around = neighbours[junction];
+        const int last = onto.back();
+        if (last == junction || std::find(around.begin(), around.end(), last) != around.end()) {
+          Snap zip{end, k, -1, -1, Vec2{}, {}, {}};
+          zip.zip_onto = onto;
+          zip.zip_strokes = onto_stroke;
+          snaps.push_back(std::move(zip));
+          continue;
+        }
+      }
+    }
+    double length = 0;
+    bool crosses = false;
+    for (int i = 0; i + 1 < K; ++i) {
+      const Vec2 &a = position_[std::size_t(entry(i))], &b = position_[std::size_t(entry(i + 1))];
+      length += distance(a, b);
+      for (int g : tail[std::size_t(i)].others) {
+        const auto [c, d] = ends[std::size_t(g)];
+        if (segment_contact(a, b, position_[std::size_t(c)], position_[std::size_t(d)]) != SegmentContact::Disjoint)
+          crosses = true;
+      }
+    }
+    constexpr double kTrimTolerances = 4.0;
+    const bool overlap = crosses || length >= kTrimTolerances * t;
+    if (overlap && K == m) {
+      // Every point but the last runs along another stroke: not a tail but a
+      // stroke drawn over another, which has no one right reading.
+      const int other = refs[std::size_t(tail[0].segment)].stroke;
+      if (length >= kTrimTolerances * t) {
+        const Vec2 &from = position_[std::size_t(entry(0))], &to = position_[std::size_t(entry(K - 1))];
+        if (other == end.stroke)
+          throw InvalidDrawingError(DrawingDefect::Retrace,
+                                    stroke_name(end.stroke) + " runs back along itself from " + point_text(from) +
+                                        " to " + point_text(to) + ", within the tolerance " + format_double(t) +
+                                        ": a stroke may not retrace itself",
+                                    end.stroke, -1, end.stroke);
+        const SegmentRef a{end.stroke, 0}, b = refs[std::size_t(tail[0].segment)];
+        fail_overlap(a, b, from, to);
+      }
+    }
+    // Two ends that nearly meet (a ring closed past its start, two legs at
+    // the hip): the tail joins the other free end, at its tail vertex
+    // nearest that end. Ends rather than the strokes beside them, so that
+    // the overlap of two ends leaves one junction and no stub, whatever
+    // its length.
+    int meet = -1, meet_at = -1;
+    double meet_distance = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < K; ++k) {
+      const Vec2& p = position_[std::size_t(entry(k))];
+      for (int g : tail[std::size_t(k)].others)
+        for (int w : {ends[std::size_t(g)].first, ends[std::size_t(g)].second}) {
+          if (neighbours[w].size() != 1 || tail_vertices.count(w)) continue;
+          const double d = distance(p, position_[std::size_t(w)]);
+          if (d <= t && d < meet_distance) meet = w, meet_at = k, meet_distance = d;
+        }
+    }
+    if (meet >= 0) {
+      // The segment of `meet` among those measured, for the stale check.
+      int segment = -1;
+      for (int g : tail[std::size_t(meet_at)].others)
+        if (ends[std::size_t(g)].first == meet || ends[std::size_t(g)].second == meet) segment = g;
+      snaps.push_back({end, meet_at, segment, meet, position_[std::size_t(meet)], {}, {}});
+      continue;
+    }
+    const int j = overlap && K < m ? K - 1 : 0;
+    const Near& target = tail[std::size_t(j)];
+    const Vec2 p = position_[std::size_t(entry(j))];
+    const auto [a, b] = ends[std::size_t(target.segment)];
+    // Onto an end of the segment rather than a new vertex beside it: if the
+    // foot is within a quarter tolerance of it (a new vertex that close
+    // would leave a sliver edge, which the morph's triangulation pays for),
+    // or if it is a free end within the tolerance (two ends meet).
+    int onto = -1;
+    for (int w : {a, b}) {
+      const Vec2& pw = position_[std::size_t(w)];
+      const bool close = distance(target.at, pw) <= 0.25 * t || neighbours[w].size() == 1;
+      if (close && distance(p, pw) <= t && (onto < 0 || distance(p, pw) < distance(p, position_[std::size_t(onto)])))
+        onto = w;
+    }
+    // The vertex before the snapping one already joins the target: the new
+    // edge would double an edge (or fold onto one). The end is a stub along
+    // its neighbour's edges, as where a ring's end point landed on its
+    // second point and its first dangles: it merges into that neighbour.
+    if (j < m) {
+      const int before = entry(j + 1);
+      const auto& joined = neighbours[before];
+      const bool doubles = onto >= 0 ? std::find(joined.begin(), joined.end(), onto) != joined.end()
+                                     : (a == before || b == before);
+      if (doubles) {
+        if (distance(p, position_[std::size_t(before)]) <= kSnapExclusionTolerances * t)
+          snaps.push_back({end, j, target.segment, before, position_[std::size_t(before)], {}, {}});
+        continue;
+      }
+    }
+    snaps.push_back({end, j, target.segment, onto, onto >= 0 ? position_[std::size_t(onto)] : target.at, {}, {}});
   }
   if (snaps.empty()) return false;
-  // Apply in order; a snap whose end, target or target segment a previous
-  // snap of this round changed waits for the next round, when it is
-  // measured again.
+  // Apply in order; a snap whose vertices a previous snap of this round
+  // changed waits for the next round, when it is measured again.
   std::unordered_set<int> moved;
   std::set<int> split;
   bool any = false;
   std::vector<std::pair<std::size_t, int>> segment_inserts;  // (segment, vertex)
+  std::vector<std::pair<int, int>> trims;                    // (stroke, entries off the front or back, signed)
   for (const Snap& snap : snaps) {
-    const FreeEnd& end = free_ends[snap.end];
+    auto& path = paths_[std::size_t(snap.end.stroke)];
+    const int m = int(path.size()) - 1;
+    const auto entry = [&](int k) -> const PathEntry& { return path[std::size_t(snap.end.back ? m - k : k)]; };
+    if (!snap.zip_onto.empty()) {
+      bool stale = false;
+      for (int k = 0; k <= snap.trimmed && !stale; ++k) stale = moved.count(entry(k).vertex) > 0;
+      for (int w : snap.zip_onto) stale = stale || moved.count(w) > 0;
+      if (stale) continue;
+      for (int k = 0; k < snap.trimmed; ++k) {
+        const int gone = entry(k).vertex;
+        const int lands = snap.zip_onto[std::size_t(k)];
+        parent_[std::size_t(gone)] = lands;
+        moved.insert(gone);
+        moved.insert(lands);
+        const auto it = first_point.find(gone);
+        if (it == first_point.end()) continue;
+        // The end itself is the snap; the run behind it merges.
+        DrawingChange change{k == 0 ? DrawingChangeKind::Snap : DrawingChangeKind::Merge};
+        change.stroke = reported_stroke(it->second);
+        change.point = reported_point(it->second);
+        change.other_stroke = snap.zip_strokes[std::size_t(k)];
+        records_.push_back({change, lands, it->second});
+        ++(k == 0 ? snaps_ : merges_);
+      }
+      moved.insert(entry(snap.trimmed).vertex);
+      trims.emplace_back(snap.end.stroke, snap.end.back ? -snap.trimmed : snap.trimmed);
+      any = true;
+      continue;
+    }
+    if (snap.segment < 0) continue;
     const auto [a, b] = ends[std::size_t(snap.segment)];
-    if (moved.count(end.vertex) || moved.count(a) || moved.count(b) || split.count(snap.segment)) continue;
-    DrawingChange change{DrawingChangeKind::Snap};
-    change.stroke = end.point >= 0 ? reported_stroke(end.point) : end.stroke;
-    change.point = end.point >= 0 ? reported_point(end.point) : -1;
-    change.other_stroke = refs[std::size_t(snap.segment)].stroke;
-    int lands = end.vertex;
+    // The snapping vertex's next one too: two ends snapping onto each
+    // other's neighbours in one round would join them twice.
+    bool stale = moved.count(a) || moved.count(b) || split.count(snap.segment);
+    for (int k = 0; k <= snap.trimmed + 1 && k <= m && !stale; ++k) stale = moved.count(entry(k).vertex) > 0;
+    if (stale) continue;
+    const PathEntry& snapping = entry(snap.trimmed);
+    const int v = snapping.vertex;
+    const int other_stroke = refs[std::size_t(snap.segment)].stroke;
+    int lands = v;
     if (snap.vertex >= 0) {
-      // The end becomes the target vertex (which keeps its place).
-      parent_[std::size_t(end.vertex)] = snap.vertex;
+      parent_[std::size_t(v)] = snap.vertex;  // the end becomes that vertex, which keeps its place
       lands = snap.vertex;
     } else {
-      position_[std::size_t(end.vertex)] = snap.at;
-      segment_inserts.emplace_back(std::size_t(snap.segment), end.vertex);
+      position_[std::size_t(v)] = snap.at;
+      segment_inserts.emplace_back(std::size_t(snap.segment), v);
       split.insert(snap.segment);
     }
-    moved.insert(end.vertex);
+    // A stub folded onto its own neighbour merges; anything else snaps.
+    const bool into_neighbour = snap.trimmed < m && snap.vertex == entry(snap.trimmed + 1).vertex;
+    DrawingChange change{into_neighbour ? DrawingChangeKind::Merge : DrawingChangeKind::Snap};
+    const int point = snapping.point >= 0 ? snapping.point : (first_point.count(v) ? first_point.at(v) : -1);
+    change.stroke = point >= 0 ? reported_stroke(point) : snap.end.stroke;
+    change.point = point >= 0 ? reported_point(point) : -1;
+    change.other_stroke = into_neighbour ? snap.end.stroke : other_stroke;
+    records_.push_back({change, lands, point});
+    ++(into_neighbour ? merges_ : snaps_);
+    // The tail beyond it merges into the junction.
+    for (int k = 0; k < snap.trimmed; ++k) {
+      const int gone = entry(k).vertex;
+      parent_[std::size_t(gone)] = lands;
+      moved.insert(gone);
+      const auto it = first_point.find(gone);
+      if (it == first_point.end()) continue;
+      ++merges_;
+      DrawingChange merge{DrawingChangeKind::Merge};
+      merge.stroke = reported_stroke(it->second);
+      merge.point = reported_point(it->second);
+      merge.other_stroke = other_stroke;
+      records_.push_back({merge, lands, it->second});
+    }
+    if (snap.trimmed > 0) trims.emplace_back(snap.end.stroke, snap.end.back ? -snap.trimmed : snap.trimmed);
+    if (snap.trimmed + 1 <= m) moved.insert(entry(snap.trimmed + 1).vertex);
+    moved.insert(v);
     moved.insert(a);
     moved.insert(b);
-    ++snaps_;
-    records_.push_back({change, lands, end.point});
     any = true;
   }
-  // Insert the split points, last entry of a stroke first.
+  // Insert the split points, last entry of a stroke first, then drop the
+  // trimmed entries (their vertices now alias the junction, so
+  // normalize_paths would merely collapse them; dropping them keeps a path
+  // from stepping back and forth through the junction).
   std::sort(segment_inserts.begin(), segment_inserts.end(), [&](const auto& x, const auto& y) {
     const SegmentRef &rx = refs[x.first], &ry = refs[y.first];
     return rx.stroke != ry.stroke ? rx.stroke < ry.stroke : rx.entry > ry.entry;
@@ -625,6 +886,13 @@ bool Cleaner::snap() {
   for (const auto& [segment, vertex] : segment_inserts) {
     auto& path = paths_[std::size_t(refs[segment].stroke)];
     path.insert(path.begin() + refs[segment].entry + 1, PathEntry{vertex, -1});
+  }
+  for (const auto& [stroke, count] : trims) {
+    auto& path = paths_[std::size_t(stroke)];
+    if (count > 0)
+      path.erase(path.begin(), path.begin() + count);
+    else
+      path.erase(path.end() + count, path.end());
   }
   if (any) normalize_paths();
   return any;
@@ -719,8 +987,13 @@ CleanedDrawing Cleaner::run() {
     // Merging first: a rounded crossing may land within the merge distance
     // of a vertex, which join() would otherwise see as a touch.
     bool changed = merge_vertices();
+    // Snapping before joining: an end that overshot a stroke by less than
+    // the tolerance is pulled back onto it (a T, as meant), rather than
+    // crossing it and leaving a stub that the junction then shields.
+    // Snaps that wait for a neighbour's (stale in their round) go before
+    // any join, or a crossing made meanwhile would shield them.
+    for (int again = 0; again < kMaxRounds && snap(); ++again) changed = true;
     changed = join() || changed;
-    changed = snap() || changed;
     if (!changed) break;
   }
   return assemble();

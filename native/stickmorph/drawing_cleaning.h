@@ -12,9 +12,11 @@
 //    duplicates always) become one vertex, so zero-length edges vanish;
 //  - crossings and touchings become shared vertices (T- and X-junctions);
 //  - a free stroke end within the tolerance of another stroke, or of a part
-//    of its own stroke that is not just behind it, snaps onto it (an end
-//    that stopped short); an end that overshoots a stroke is left as drawn,
-//    the crossing makes its junction;
+//    of its own stroke that is not just behind it, snaps onto it: an end
+//    that stopped short, or overshot by less than the tolerance, makes a
+//    T-junction; two ends that nearly meet join. A tail that runs along what
+//    it snaps to (a ring closed past its start) merges into the junction;
+//    a longer overshoot keeps its stub, the crossing makes its junction;
 //  - strokes that run along each other (collinear for a length) and a
 //    stroke that retraces itself are errors, naming the strokes: there is no
 //    one right way to pull them apart.

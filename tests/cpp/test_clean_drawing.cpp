@@ -101,12 +101,36 @@ TEST_CASE("clean_drawing: an end near a stroke's vertex snaps onto the vertex", 
   CHECK(cleaned.stroke_vertices[1] == std::vector<int>{3, 1});
 }
 
-TEST_CASE("clean_drawing: an overshoot keeps its stub and gets the crossing", "[clean_drawing]") {
-  const CleanedDrawing cleaned = clean({{{0, 0}, {10, 0}}, {{4, -10}, {4, 0.1}}});
-  CHECK(cleaned.ends_snapped == 0);
-  CHECK(cleaned.junctions_made == 1);
-  CHECK(cleaned.figure.vertices.size() == 5);
-  CHECK(cleaned.figure.vertices[3] == Vec2{4, 0.1});  // the stub's end, as drawn
+TEST_CASE("clean_drawing: an overshoot within the tolerance is pulled back, a longer one keeps its stub", "[clean_drawing]") {
+  const CleanedDrawing short_one = clean({{{0, 0}, {10, 0}}, {{4, -10}, {4, 0.1}}});
+  CHECK(short_one.ends_snapped == 1);
+  CHECK(short_one.junctions_made == 0);
+  REQUIRE(short_one.figure.vertices.size() == 4);
+  CHECK(short_one.figure.vertices[3] == Vec2{4, 0});  // a T, as meant
+  require_cleans_to_itself(short_one);
+  const CleanedDrawing long_one = clean({{{0, 0}, {10, 0}}, {{4, -10}, {4, 0.5}}});
+  CHECK(long_one.ends_snapped == 0);
+  CHECK(long_one.junctions_made == 1);
+  REQUIRE(long_one.figure.vertices.size() == 5);
+  CHECK(long_one.figure.vertices[3] == Vec2{4, 0.5});  // the stub's end, as drawn
+  require_cleans_to_itself(long_one);
+}
+
+TEST_CASE("clean_drawing: a ring closed past its start closes once", "[clean_drawing]") {
+  // 44 points around a circle of radius 5 over 400 degrees, jittered: the
+  // last 40 degrees run along the first and cross them. The tail merges
+  // into one junction; no little loops are left.
+  Lcg random{7};
+  std::vector<Vec2> ring;
+  for (int i = 0; i < 44; ++i) {
+    const double a = 1.5707963267948966 + 6.283185307179586 * i / 40;
+    ring.push_back({5 * std::cos(a) + (random.next() - 0.5) * 0.04, 5 * std::sin(a) + (random.next() - 0.5) * 0.04});
+  }
+  const CleanedDrawing cleaned = clean({ring});
+  CHECK(cleaned.junctions_made == 0);
+  CHECK(cleaned.ends_snapped == 1);
+  // One closed loop: every vertex has degree 2 (V == E).
+  CHECK(cleaned.figure.vertices.size() == cleaned.figure.edges.size());
   require_cleans_to_itself(cleaned);
 }
 
@@ -169,7 +193,7 @@ TEST_CASE("clean_drawing: bad drawings name the stroke", "[clean_drawing]") {
   fails({{{0, 0}, {0, 0}, {0, 0}}, {{1, 1}, {2, 2}}}, DrawingDefect::CollapsedStroke,
         "stroke 0 collapses to a single point at (0, 0)", 0);
   fails({{{0, 0}, {5, 0}}, {{2, 0}, {8, 0}}}, DrawingDefect::Overlap,
-        "strokes 0 and 1 overlap along a length from (2, 0) to (5, 0)", 0);
+        "strokes 0 and 1 overlap along a length", 0);
   fails({{{0, 0}, {5, 0}, {5, 5}, {5, 1}}}, DrawingDefect::Retrace, "stroke 0 retraces itself", 0);
   fails({{{0, 0}, {5, 0}}}, DrawingDefect::Retrace, "stroke 0 retraces itself", 0, {true});
   fails({{{0, 0}, {NAN, 0}}}, DrawingDefect::NonFiniteCoordinate, "point 1 of stroke 0 is not finite", 0);
@@ -226,7 +250,7 @@ TEST_CASE("clean_drawing: random scribbles clean into valid figures that clean t
       ++overlaps;
     }
   }
-  CHECK(crossings > 50);
+  CHECK(crossings > 30);
   CHECK(snaps > 5);
   CHECK(overlaps <= 2);
 }
