@@ -7,6 +7,8 @@
         --key-poses wave_keys --zip dist/stick_morph-<version>.zip --out out/stick_man_wave
     blender ... --python scripts/render_demo.py -- --sample blend_samples/local_timing/stick_man_lag.blend \
         --zip dist/stick_morph-<version>.zip --out out/stick_man_lag --frames 48
+    blender ... --python scripts/render_demo.py -- --sample blend_samples/drawings/stick_figure_gp.blend \
+        --zip dist/stick_morph-<version>.zip --out out/stick_figure_gp --frames 48
 
 Steps:
 1. Re-launches Blender with BLENDER_USER_SCRIPTS, BLENDER_USER_CONFIG and
@@ -19,6 +21,9 @@ Steps:
    Morph settings name) with object.stick_morph_bake (renderable Geometry
    Nodes tubes), frames 1..N, with the Delay Group and Overlap those
    settings name (local timing, issue 31: blend_samples/local_timing/);
+   a Grease Pencil pair (issue 32: blend_samples/drawings/) bakes into a
+   Grease Pencil object, one drawing per frame, which renders with its own
+   materials;
    with --key-poses COLLECTION, the collection's meshes as key poses with
    object.stick_morph_bake_sequence, each key at its own key frame (issue 28).
 4. Sets up Workbench for a clear picture: flat dark tubes on a light
@@ -136,9 +141,17 @@ def bake(source, target, frames, tube_radius):
     if obj is None or obj.get("stick_morph_role") != "result":
         fail("the bake did not leave its result active")
     lag = f", '{timing['delay_group']}' lagging by {timing['overlap']:g}" if timing else ""
-    print(f"baked {source.name} -> {target.name} into '{obj.name}': {len(obj.data.vertices)} vertices, "
+    print(f"baked {source.name} -> {target.name} into '{obj.name}': {describe(obj)}, "
           f"{frames} frames{lag}, {time.perf_counter() - started:.2f} s", flush=True)
     return obj
+
+
+def describe(obj):
+    """"18 vertices" for a mesh result; "Grease Pencil, 48 drawings" for a
+    Grease Pencil one (issue 32: a Grease Pencil source's result)."""
+    if obj.type == "MESH":
+        return f"{len(obj.data.vertices)} vertices"
+    return f"Grease Pencil, {sum(len(layer.frames) for layer in obj.data.layers)} drawings"
 
 
 def bake_key_poses(collection_name, tube_radius):
@@ -161,8 +174,8 @@ def bake_key_poses(collection_name, tube_radius):
     if obj is None or obj.get("stick_morph_role") is None:
         fail("the key-pose bake did not leave its result active")
     scene = bpy.context.scene
-    print(f"baked {len(keys)} key poses of '{collection_name}' into '{obj.name}': {len(obj.data.vertices)} "
-          f"vertices, frames {scene.frame_start}..{scene.frame_end}, {time.perf_counter() - started:.2f} s",
+    print(f"baked {len(keys)} key poses of '{collection_name}' into '{obj.name}': {describe(obj)}, "
+          f"frames {scene.frame_start}..{scene.frame_end}, {time.perf_counter() - started:.2f} s",
           flush=True)
     return obj, keys
 

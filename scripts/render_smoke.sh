@@ -4,7 +4,9 @@
 # frames at 320x180) and the waving stick man through its four key poses
 # (issue 28: object.stick_morph_bake_sequence, 97 frames at 320x180) and the
 # stick man whose hand lags (issue 31: the sample scene's Delay Group), and
-# checks that the PNG frames and the MP4s were written.
+# the Grease Pencil stick figure (issue 32: cleaned, baked into Grease Pencil,
+# one drawing per frame), and checks that the PNG frames and the MP4s were
+# written.
 # scripts/blender_matrix.sh runs it in every tested Blender, so the README
 # demo's render is known to work in 3.4, 4.3 and 5.2 alike.
 set -euo pipefail
@@ -64,3 +66,19 @@ grep -q "'lag' lagging by 0.3" "$out/local_timing.log" || { echo "render_smoke.s
 lag_pngs=$(find "$out/local_timing/frames" -name 'frame_*.png' | wc -l)
 [[ "$lag_pngs" -eq "$frames" ]] || { echo "render_smoke.sh: $lag_pngs PNG frames of the local-timing sample, expected $frames" >&2; exit 1; }
 echo "render smoke: the local-timing sample baked with its Delay Group and rendered $lag_pngs frames"
+
+# The Grease Pencil sample (issue 32): two hand-drawn poses whose strokes
+# cross and stop short, cleaned and baked into a Grease Pencil object with
+# one drawing per frame, rendered with its own materials.
+if ! blender -b --factory-startup --python-exit-code 1 --python scripts/render_demo.py -- \
+    --sample blend_samples/drawings/stick_figure_gp.blend --zip "$package" --out "$out/drawing" \
+    --frames "$frames" --resolution 320 180 > "$out/drawing.log" 2>&1; then
+  tail -n 40 "$out/drawing.log" >&2
+  echo "render_smoke.sh: the Grease Pencil bake and render failed" >&2
+  exit 1
+fi
+grep -q "Grease Pencil, $frames drawings" "$out/drawing.log" || { echo "render_smoke.sh: the Grease Pencil sample did not bake into $frames drawings" >&2; exit 1; }
+gp_pngs=$(find "$out/drawing/frames" -name 'frame_*.png' | wc -l)
+[[ "$gp_pngs" -eq "$frames" ]] || { echo "render_smoke.sh: $gp_pngs PNG frames of the Grease Pencil sample, expected $frames" >&2; exit 1; }
+[[ "$(head -c 8 "$out/drawing/morph.mp4" | tail -c 4)" == "ftyp" ]] || { echo "render_smoke.sh: the Grease Pencil sample's morph.mp4 is not an MP4 file" >&2; exit 1; }
+echo "render smoke: the Grease Pencil sample baked into $frames drawings and rendered $gp_pngs frames and an MP4"
