@@ -542,6 +542,13 @@ bool Cleaner::snap() {
     if (neighbours[paths_[s].back().vertex].size() == 1) free_ends.push_back({int(s), true});
   }
   if (free_ends.empty()) return false;
+  // Where strokes begin and end, joined or not: where strokes meet.
+  std::unordered_set<int> stroke_ends;
+  for (std::size_t s = 0; s < paths_.size(); ++s)
+    if (!in_.cyclic[s] && !paths_[s].empty()) {
+      stroke_ends.insert(paths_[s].front().vertex);
+      stroke_ends.insert(paths_[s].back().vertex);
+    }
 
   // A uniform grid of the segments, cells of the tolerance (at least a
   // millionth of the drawing, so that the grid stays small), for the
@@ -628,6 +635,7 @@ bool Cleaner::snap() {
     };
     std::vector<Near> tail;
     std::unordered_set<int> tail_vertices;
+    int along = -1;  // the stroke the tail runs along: the end's nearest
     for (int k = 0; k < m; ++k) {
       const int v = entry(k);
       if (k > 0 && neighbours[v].size() != 2) break;
@@ -643,11 +651,16 @@ bool Cleaner::snap() {
         const auto [a, b] = ends[std::size_t(g)];
         if (excluded.count(a) || excluded.count(b)) continue;
         others.push_back(g);
+        // Past the end itself, only the stroke the end is near: a tail runs
+        // along one stroke (in a dense drawing something else is always
+        // within the tolerance of some point).
+        if (along >= 0 && refs[std::size_t(g)].stroke != along) continue;
         const Vec2 q = nearest_on_segment(p, position_[std::size_t(a)], position_[std::size_t(b)]);
         const double d = distance(p, q);
         if (d <= t && d < best_distance) best = g, best_distance = d, best_at = q;
       }
       if (best < 0) break;
+      along = refs[std::size_t(best)].stroke;
       tail.push_back({best, best_at, std::move(others)});
     }
     if (tail.empty()) continue;
@@ -677,6 +690,9 @@ bool Cleaner::snap() {
         double best_distance = std::numeric_limits<double>::infinity();
         for (int g : near(p)) {
           const auto [a, b] = ends[std::size_t(g)];
+          // Along its own stroke only: the branch is the ring's other end,
+          // and the run's points stay on their stroke's path.
+          if (refs[std::size_t(g)].stroke != end.stroke) continue;
           if (run.count(a) || run.count(b) || a == entry(k + 1) || b == entry(k + 1)) continue;
           const double d = distance(p, nearest_on_segment(p, position_[std::size_t(a)], position_[std::size_t(b)]));
           if (d > t) continue;
@@ -709,6 +725,7 @@ bool Cleaner::snap() {
       const Vec2 &a = position_[std::size_t(entry(i))], &b = position_[std::size_t(entry(i + 1))];
       length += distance(a, b);
       for (int g : tail[std::size_t(i)].others) {
+        if (refs[std::size_t(g)].stroke != along) continue;
         const auto [c, d] = ends[std::size_t(g)];
         if (segment_contact(a, b, position_[std::size_t(c)], position_[std::size_t(d)]) != SegmentContact::Disjoint)
           crosses = true;
@@ -733,17 +750,18 @@ bool Cleaner::snap() {
       }
     }
     // Two ends that nearly meet (a ring closed past its start, two legs at
-    // the hip): the tail joins the other free end, at its tail vertex
-    // nearest that end. Ends rather than the strokes beside them, so that
-    // the overlap of two ends leaves one junction and no stub, whatever
-    // its length.
+    // the hip), or an end near a junction or where strokes already meet:
+    // the tail joins that vertex, at its tail vertex nearest it. Rather than the strokes
+    // beside them, so that the overlap of two ends leaves one junction and
+    // no stub whatever its length, and three strokes drawn to one point
+    // meet at one vertex, not in a tiny triangle of three.
     int meet = -1, meet_at = -1;
     double meet_distance = std::numeric_limits<double>::infinity();
     for (int k = 0; k < K; ++k) {
       const Vec2& p = position_[std::size_t(entry(k))];
       for (int g : tail[std::size_t(k)].others)
         for (int w : {ends[std::size_t(g)].first, ends[std::size_t(g)].second}) {
-          if (neighbours[w].size() != 1 || tail_vertices.count(w)) continue;
+          if ((neighbours[w].size() == 2 && !stroke_ends.count(w)) || tail_vertices.count(w)) continue;
           const double d = distance(p, position_[std::size_t(w)]);
           if (d <= t && d < meet_distance) meet = w, meet_at = k, meet_distance = d;
         }
