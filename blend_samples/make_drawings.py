@@ -113,7 +113,9 @@ def stick_figure_strokes(pose, seed=32):
 def grease_pencil_data(name):
     """New Grease Pencil data of this Blender: legacy before 4.3 (bpy.data.grease_pencils),
     v3 in 4.3 (grease_pencils_v3) and 5.x (grease_pencils)."""
-    collection = getattr(bpy.data, "grease_pencils_v3", None) or bpy.data.grease_pencils
+    collection = getattr(bpy.data, "grease_pencils_v3", None)  # not `or`: an empty collection is false
+    if collection is None:
+        collection = bpy.data.grease_pencils
     return collection.new(name)
 
 

@@ -455,7 +455,9 @@ def remove_result_object(obj):
         bpy.data.meshes.remove(mesh)
     if pencil is not None and pencil.users == 0:
         # bpy.data.grease_pencils in 3.x and 5.x, grease_pencils_v3 in 4.3.
-        (getattr(bpy.data, "grease_pencils_v3", None) or bpy.data.grease_pencils).remove(pencil)
+        # (Not `a or b`: an empty collection is false.)
+        v3 = getattr(bpy.data, "grease_pencils_v3", None)
+        (v3 if v3 is not None else bpy.data.grease_pencils).remove(pencil)
     if action is not None and action.users == 0:
         bpy.data.actions.remove(action)
 

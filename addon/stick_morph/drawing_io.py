@@ -46,7 +46,10 @@ def is_legacy(obj) -> bool:
 def _gp_collection():
     """bpy.data's collection of Grease Pencil data of the running Blender:
     legacy (3.x), grease_pencils_v3 (4.3), grease_pencils (5.x, v3)."""
-    return getattr(bpy.data, "grease_pencils_v3", None) or bpy.data.grease_pencils
+    # Not `a or b`: an empty collection is false, and 4.3's grease_pencils
+    # (its annotations' legacy type) would be taken for it.
+    v3 = getattr(bpy.data, "grease_pencils_v3", None)
+    return v3 if v3 is not None else bpy.data.grease_pencils
 
 
 def _layer_name(layer) -> str:
@@ -147,8 +150,12 @@ def _attribute(drawing, name, count, default, width=1, dtype=np.float32):
 
 
 def _v3_strokes(obj, drawing, matrix, scale, where):
-    offsets = np.empty(len(drawing.curve_offsets), dtype=np.int32)
-    drawing.curve_offsets.foreach_get("value", offsets)
+    # A drawing of no strokes: 4.3's curve_offsets has length 1 but no item
+    # to get (foreach_get: "given 1, needed 0"); one of n strokes has n + 1.
+    offsets = np.zeros(0, dtype=np.int32)
+    if len(drawing.curve_offsets) > 1:
+        offsets = np.empty(len(drawing.curve_offsets), dtype=np.int32)
+        drawing.curve_offsets.foreach_get("value", offsets)
     stroke_count = max(len(offsets) - 1, 0)
     point_count = int(offsets[-1]) if len(offsets) else 0
     position = _attribute(drawing, "position", point_count, 0.0, 3).astype(np.float64)

@@ -144,8 +144,8 @@ def full_snapshot():
                 pencils.append((obj.name, obj.data.name, frame.frame_number, len(strokes),
                                 tuple(s[0].round(7).tobytes() for s in strokes)))
     state["grease_pencil"] = sorted(pencils)
-    state["grease_pencil_data"] = sorted(d.name for d in (getattr(bpy.data, "grease_pencils_v3", None)
-                                                          or bpy.data.grease_pencils))
+    v3 = getattr(bpy.data, "grease_pencils_v3", None)  # 4.3; legacy (3.4) and v3 (5.x) are grease_pencils
+    state["grease_pencil_data"] = sorted(d.name for d in (v3 if v3 is not None else bpy.data.grease_pencils))
     state["curves"] = sorted((c.name, tuple(len(s.points) + len(s.bezier_points) for s in c.splines),
                               getattr(c, "fill_mode", None)) for c in bpy.data.curves)
     settings = bpy.context.scene.stick_morph
