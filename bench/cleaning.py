@@ -15,19 +15,24 @@ bounding-box diagonal) and this script checks:
               bench/correspondence_check.py's plane_problems): no two edges cross or overlap, no
               vertex lies on an edge that does not end at it, no two vertices coincide; no edge
               from a vertex to itself and none twice
-  limits      every merge moved its point by at most the merge distance (tolerance / 100) and
-              every snap moved a free end (the first or last point of an open stroke) by at most
-              the tolerance, as `stickmorph clean --help` says
+  limits      docs/FORMAT.md's: a merge joins a point to one drawn within the merge distance
+              (tolerance / 100) of it, or is a point of a tail (from a snapped point to its stroke's
+              end, all on the snap's vertex, each drawn within the tolerance of another stroke);
+              a snap moves a free end (with its pen pauses) or a tail's inner end, by at most the
+              tolerance
   accounted   every change is reported: each input point lands on its vertex (point_vertices)
               exactly where it was drawn, unless a merge or snap change names that stroke and
               point with the distance it moved (within 1e-12, relative) and `at` its vertex; every
               merge and snap change says how far its point really moved; each stroke's path
               (cleaning.strokes) runs along the figure's edges and every edge lies on a path (on two
-              only if it is within the tolerance: counted, snapping makes that of strokes meeting
-              at a shallow angle; longer, the strokes run along each other); the
+              only within the tolerance: counted, snapping makes that of strokes meeting at a
+              shallow angle; a run of such edges longer than the tolerance is an overlap); the
               path passes through its points' vertices in order, and any vertex between two of
               them lies on their segment as drawn or between where they went when one of them
-              moved (within 1e-9 of the size: a crossing's point rounded). Not a failure but
+              moved (within 1e-9 of the size: a crossing's point rounded), or, when one of them
+              moved, on a straight piece between an earlier and a later vertex of the path there
+              no further from the drawn segment than the point moved (the stroke from its last
+              junction to a snapped end is drawn anew, and later junctions land on it). Not a failure but
               counted, a *bend*: a vertex where a change names the stroke within the merge distance
               (tolerance / 100) of the segment, a crossing that fell that close to another stroke's
               point put on that point. Every vertex that two strokes share, or one stroke at two
@@ -270,14 +275,15 @@ def accounting_problems(drawing, doc, size, bends=None, shared_edges=None):
         add(f"edges {unused[:5]} ({len(unused)}) lie on no stroke's path")
     # Two strokes along one edge: an overlap, unless the edge is within the tolerance (snapping and
     # merging make that of two strokes meeting at a shallow angle; the engine keeps it, once)
+    # (a run of such edges longer than the tolerance, even of short edges, is an overlap)
     tol = float(c["tolerance"])
-    twice = {tuple(sorted(k)): v for k, v in used.items() if len(v) > 1}
-    long_twice = {k: v for k, v in twice.items() if math.dist(vertices[k[0]], vertices[k[1]]) > tol}
-    if long_twice:
-        add(f"edges longer than the tolerance on two paths (strokes along each other): "
-            f"{list(long_twice.items())[:5]}")
-    if shared_edges is not None:
-        shared_edges.extend(k for k in twice if k not in long_twice)
+    twice = {tuple(sorted(k)): tuple(sorted(set(v))) for k, v in used.items() if len(v) > 1}
+    for strokes_pair, length, run in shared_runs(twice, vertices):
+        if length > tol:
+            add(f"strokes {list(strokes_pair)} run along each other for {length:.6g} ({length / tol:.3g} tolerances, "
+                f"{len(run)} edges on both paths): an overlap along a length, which the contract refuses")
+        elif shared_edges is not None:
+            shared_edges.extend(run)
     # shared vertices explained
     if stray:
         add(f"changes {stray[:5]} are at no vertex of the figure")
@@ -323,30 +329,134 @@ def accounting_problems(drawing, doc, size, bends=None, shared_edges=None):
 
 
 def limit_problems(drawing, doc):
-    """The contract's limits (`stickmorph clean --help`): a merge moves a point by at most the merge
-    distance (tolerance / 100), a snap moves a free end (the first or last point of a stroke that is
-    not cyclic, or a point drawn exactly there) by at most the tolerance."""
+    """The contract's limits (docs/FORMAT.md, `clean`). A merge joins a point to one drawn within
+    the merge distance (tolerance / 100) of it, or is a point of a *tail*: the run from a snapped
+    point to its stroke's end, every point of it on the snap's vertex, each drawn within the
+    tolerance of another stroke (or of a far part of its own). A snap moves a free end (with its
+    pen pauses) or a tail's inner end: every point from it to one end of its open stroke is on its
+    vertex; by at most the tolerance."""
     c = doc["cleaning"]
     tol = float(c["tolerance"])
+    merge = tol * MERGE_FRACTION
+    slack = 1 + 1e-9
+    pv = c["point_vertices"]
+    on_vertex = {}
+    for i, row in enumerate(pv):
+        for j, v in enumerate(row):
+            on_vertex.setdefault(v, []).append((i, j))
+    snapped = {}
+    for ch in c["changes"]:
+        if ch["kind"] == "snap" and ch.get("point") is not None:
+            snapped.setdefault((ch["stroke"], pv[ch["stroke"]][ch["point"]]), []).append(ch["point"])
+
+    def run_to_end(i, j):
+        """The points from j to the end of open stroke i that j's side reaches, if all are on j's
+        vertex (else None): j..last or 0..j."""
+        points, cyclic = drawing[i]
+        if cyclic:
+            return None
+        v = pv[i][j]
+        for run in (range(j, len(points)), range(0, j + 1)):
+            if all(pv[i][k] == v for k in run):
+                return run
+        return None
+
+    def tail_point(i, j):
+        v = pv[i][j]
+        for s in snapped.get((i, v), []):
+            run = run_to_end(i, s)
+            if run is not None and j in run:
+                return run
+        return None
+
+    def near_elsewhere(i, j, run):
+        """Whether point j of stroke i was drawn within the tolerance of another stroke, or of its
+        own stroke away from its tail (the tail's segments and the one before it left out)."""
+        p = np.array(drawing[i][0][j], dtype=float)
+        for k, (points, cyclic) in enumerate(drawing):
+            pts = np.array(points, dtype=float)
+            if len(pts) < 2:
+                continue
+            a, b = (pts, np.roll(pts, -1, axis=0)) if cyclic else (pts[:-1], pts[1:])
+            d = b - a
+            dd = np.maximum(np.einsum("ij,ij->i", d, d), 1e-300)
+            tt = np.clip(np.einsum("ij,ij->i", p[None, :] - a, d) / dd, 0.0, 1.0)
+            dist = np.hypot(*(a + tt[:, None] * d - p[None, :]).T)
+            if k == i:
+                lo, hi = min(run) - 1, max(run)  # segments m with m+1 >= lo and m <= hi touch the tail
+                keep = np.array([not (lo - 1 <= m <= hi) for m in range(len(a))])
+                dist = np.where(keep, dist, np.inf)
+            if dist.size and float(dist.min()) <= tol * slack:
+                return True
+        return False
+
     problems = []
     for ch in c["changes"]:
         i, j = ch["stroke"], ch.get("point")
-        if ch["kind"] == "merge" and float(ch["distance"]) > tol * MERGE_FRACTION * (1 + 1e-9):
-            problems.append(f"point {j} of stroke {i} merged {ch['distance']:.6g} away ({ch['distance'] / tol:.3g} "
-                            f"tolerances; merges are within {MERGE_FRACTION} tolerance) into stroke "
-                            f"{ch.get('other_stroke')}'s vertex at {ch['at']}")
+        if j is None:
+            continue
+        v = pv[i][j]
+        p = drawing[i][0][j]
+        if ch["kind"] == "merge" and float(ch["distance"]) > merge * slack:
+            taken = any((k, l) != (i, j) and math.dist(p, drawing[k][0][l]) <= merge * slack
+                        for k, l in on_vertex.get(v, []))
+            run = None if taken else tail_point(i, j)
+            if not taken and run is None:
+                problems.append(f"point {j} of stroke {i} merged {ch['distance']:.6g} away ({ch['distance'] / tol:.3g} "
+                                f"tolerances) into the vertex at {ch['at']}: no point of that vertex was drawn within "
+                                f"tolerance / 100 of it, and it is on no tail of a snapped end")
+            elif run is not None and not near_elsewhere(i, j, run):
+                problems.append(f"point {j} of stroke {i} merged {ch['distance']:.6g} away ({ch['distance'] / tol:.3g} "
+                                f"tolerances) as the tail of a snap at {ch['at']}, but it was drawn more than the "
+                                f"tolerance from every other stroke")
         if ch["kind"] == "snap":
-            if float(ch["distance"]) > tol * (1 + 1e-9):
+            if float(ch["distance"]) > tol * slack:
                 problems.append(f"point {j} of stroke {i} snapped {ch['distance']:.6g} ({ch['distance'] / tol:.3g} "
                                 f"tolerances) onto stroke {ch.get('other_stroke')}")
-            points, cyclic = drawing[i]
-            if j is not None and (cyclic or points[j] not in (points[0], points[-1])):
+            if run_to_end(i, j) is None:
+                points, cyclic = drawing[i]
                 kind = ", cyclic" if cyclic else ""
                 problems.append(f"point {j} of stroke {i} (of {len(points)}{kind}) snapped onto stroke "
-                                f"{ch.get('other_stroke')} by {ch['distance']:.6g}: it is no free end")
+                                f"{ch.get('other_stroke')} by {ch['distance']:.6g}: it is no free end, nor a tail's "
+                                "inner end (the points beyond it to the stroke's end are elsewhere)")
         if len(problems) >= MAX_PROBLEMS:
             break
     return problems
+
+
+def shared_runs(twice, vertices):
+    """Edges on the paths of the same strokes, joined into runs where they share a vertex:
+    [(strokes, total length, [edges])]."""
+    by_strokes = {}
+    for edge, strokes in twice.items():
+        by_strokes.setdefault(strokes, []).append(edge)
+    out = []
+    for strokes, edges in by_strokes.items():
+        parent = {}
+
+        def find(x):
+            while parent.setdefault(x, x) != x:
+                parent[x] = parent[parent[x]]
+                x = parent[x]
+            return x
+
+        for u, v in edges:
+            parent[find(u)] = find(v)
+        runs = {}
+        for u, v in edges:
+            r = runs.setdefault(find(u), [0.0, []])
+            r[0] += math.dist(vertices[u], vertices[v])
+            r[1].append((u, v))
+        out.extend((strokes, length, run) for length, run in runs.values())
+    return out
+
+
+def segment_fit(q, pa, pb):
+    """(distance from q to the line through pa and pb, position along it: 0 at pa, 1 at pb)."""
+    d = pb - pa
+    dd = float(d @ d)
+    t = float((q - pa) @ d / dd) if dd > 0 else 0.0
+    return float(np.hypot(*(pa + t * d - q))), t
 
 
 def not_neighbours(places):
@@ -389,9 +499,12 @@ def path_order_problems(i, points, cyclic, pv, path, path_cyclic, vertices, size
         runs.pop()
     seq = [r[0] for r in runs]
     drawn = {}  # (vertex a, vertex b) of consecutive runs: the drawn segment between them
+    moves = {}  # and how far its two points moved
     closing = runs + ([runs[0]] if cyclic or path_cyclic else [])
     for r0, r1 in zip(closing, closing[1:]):
-        drawn.setdefault((r0[0], r1[0]), (points[r0[2]], points[r1[1]]))
+        pa, pb = points[r0[2]], points[r1[1]]
+        drawn.setdefault((r0[0], r1[0]), (pa, pb))
+        moves.setdefault((r0[0], r1[0]), max(math.dist(pa, vertices[r0[0]]), math.dist(pb, vertices[r1[0]])))
     walk = list(path)
     if path_cyclic and walk:
         if seq[0] in walk:
@@ -415,16 +528,21 @@ def path_order_problems(i, points, cyclic, pv, path, path_cyclic, vertices, size
         segments = [np.array(drawn.get((a, b), (vertices[a], vertices[b])), dtype=float),
                     np.array([vertices[a], vertices[b]], dtype=float)]
         last_t = [0.0, 0.0]
-        for v in walk[start + 1:pos]:
+        run = walk[start:pos + 1]
+        for n, v in enumerate(run[1:-1], 1):
             q = np.array(vertices[v])
-            fits = []
-            for pa, pb in segments:
-                d = pb - pa
-                dd = float(d @ d)
-                t = float((q - pa) @ d / dd) if dd > 0 else 0.0
-                fits.append((float(np.hypot(*(pa + t * d - q))), t))
+            fits = [segment_fit(q, pa, pb) for pa, pb in segments]
             k = 0 if fits[0][0] <= fits[1][0] else 1
             off, t = fits[k]
+            # When one of the two points moved (a reported snap), the stroke from its last junction
+            # to the moved point is drawn straight anew, and later junctions land on that piece:
+            # the vertex lies between an earlier and a later vertex of this run, no further from
+            # the drawn segment than the point moved.
+            if off > ON_SEGMENT * size and fits[0][0] <= moves.get((a, b), 0.0) * (1 + 1e-9) + ON_SEGMENT * size \
+                    and any(segment_fit(q, np.array(vertices[x]), np.array(vertices[y]))[0] <= ON_SEGMENT * size
+                            and 0 < segment_fit(q, np.array(vertices[x]), np.array(vertices[y]))[1] < 1
+                            for x in run[:n] for y in run[n + 1:]):
+                continue
             if off > ON_SEGMENT * size and off <= merge * (1 + 1e-9) and last_t[k] < t < 1.0 \
                     and i in (named_at or {}).get(v, set()):
                 if bends is not None:
@@ -503,6 +621,7 @@ def found_defects(entry, drawing, doc, size):
             out["missed"].append(f"duplicate: point {j} of stroke {i} is not the vertex of point {j - 1}")
     # snaps of ends the manifest has as free, crossings it does not have
     gap_ends = {(g["stroke"], g["point"]) for g in planted["gaps"]}
+    gap_ends |= {(x["stroke"], x["point"]) for x in planted["touches"]}  # a touching end may be a snap by 0
     partners = set()
     for g in planted["gaps"]:
         # an end stopped short of another stroke's end: that end may be the one that snaps

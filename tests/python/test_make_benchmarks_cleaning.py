@@ -198,6 +198,34 @@ def test_a_bend_within_the_merge_distance_at_a_reported_junction_is_counted_not_
     assert [(s, v) for s, v, _ in bends] == [(0, 7)] and bends[0][2] == pytest.approx(0.0004)
 
 
+def test_a_junction_on_the_piece_a_snapped_end_redrew_is_accounted():
+    # Stroke 1 crosses stroke 2 at X = (5, 2) and its end, drawn 0.3 above stroke 0, snaps to
+    # E = (5.2, 0): the stroke from X to its end is now the straight piece X-E. Stroke 3's end,
+    # drawn 0.1 short of that piece, snaps onto it at w = (5.1, 1), 0.1 off stroke 1 as drawn.
+    drawing = [([(0.0, 0.0), (10.0, 0.0)], False), ([(5.0, 5.0), (5.0, 0.3)], False),
+               ([(0.0, 2.0), (10.0, 2.0)], False), ([(8.0, 1.0), (5.2, 1.0)], False)]
+    w = [5.1, 1.0]
+    doc = {"vertices": [[0.0, 0.0], [10.0, 0.0], [5.0, 5.0], [5.2, 0.0], [0.0, 2.0], [10.0, 2.0], [8.0, 1.0], w,
+                        [5.0, 2.0]],
+           "edges": [[0, 3], [3, 1], [2, 8], [8, 7], [7, 3], [4, 8], [8, 5], [6, 7]],
+           "cleaning": {"tolerance": 0.5, "junctions_made": 1, "ends_snapped": 2, "points_merged": 0,
+                        "changes": [{"kind": "crossing", "stroke": 1, "point": None, "other_stroke": 2,
+                                     "at": [5.0, 2.0], "distance": 0.0},
+                                    {"kind": "snap", "stroke": 1, "point": 1, "other_stroke": 0, "at": [5.2, 0.0],
+                                     "distance": math.dist((5.0, 0.3), (5.2, 0.0))},
+                                    {"kind": "snap", "stroke": 3, "point": 1, "other_stroke": 1, "at": w,
+                                     "distance": math.dist((5.2, 1.0), w)}],
+                        "strokes": [{"vertices": path, "cyclic": False}
+                                    for path in ([0, 3, 1], [2, 8, 7, 3], [4, 8, 5], [6, 7])],
+                        "point_vertices": [[0, 1], [2, 3], [4, 5], [6, 7]]}}
+    assert cl.validity_problems(doc) == [] and cl.limit_problems(drawing, doc) == []
+    assert cl.accounting_problems(drawing, doc, 11.18) == []
+    # the same junction off that piece (at x = 5.15): stroke 1 bent where nothing says so
+    doc["vertices"][7] = [5.15, 1.0]
+    doc["cleaning"]["changes"][2].update(at=[5.15, 1.0], distance=0.05)
+    assert any("off their segment" in p for p in cl.accounting_problems(drawing, doc, 11.18))
+
+
 def test_a_gap_left_open_is_missed():
     doc = cleaned()
     doc["vertices"][6] = [3.0, 0.03]  # the end stays where it was drawn, stroke 0 not through it
@@ -232,15 +260,34 @@ def test_merges_and_snaps_beyond_their_limits_are_caught():
     doc["cleaning"]["changes"][2]["distance"] = 0.06  # a snap beyond the tolerance
     assert any("snapped 0.06 (1.2 tolerances)" in p for p in cl.limit_problems(DRAWING, doc))
     doc = cleaned()
-    doc["cleaning"]["changes"][0]["distance"] = 0.001  # a merge beyond tolerance / 100 (0.0005)
-    assert any("merged 0.001 away" in p for p in cl.limit_problems(DRAWING, doc))
-    doc = cleaned()
-    doc["cleaning"]["changes"][2]["point"] = 0  # stroke 2's first point: a free end, allowed
-    assert cl.limit_problems(DRAWING, doc) == []
     doc["cleaning"]["changes"].append({"kind": "snap", "stroke": 0, "point": 1, "other_stroke": 1, "at": [2.0, 0.0],
                                        "distance": 0.0})
     assert any("point 1 of stroke 0 (of 4) snapped onto stroke 1 by 0: it is no free end" in p
                for p in cl.limit_problems(DRAWING, doc))
+
+
+def test_a_pen_pause_at_a_snapped_end_moves_with_it_and_a_tail_merges():
+    # stroke 2 ends with a pen pause: both copies snap to (3, 0), the copy a merge of 0.03
+    drawing = DRAWING[:2] + [([(3.0, 2.0), (3.0, 0.03), (3.0, 0.03)], False)]
+    doc = cleaned()
+    doc["cleaning"]["point_vertices"][2] = [5, 6, 6]
+    doc["cleaning"]["changes"].append({"kind": "merge", "stroke": 2, "point": 2, "other_stroke": 2,
+                                       "at": [3.0, 0.0], "distance": 0.03})
+    doc["cleaning"]["points_merged"] = 2
+    assert cl.limit_problems(drawing, doc) == [] and cl.accounting_problems(drawing, doc, SIZE) == []
+    # a tail: stroke 2 runs on along stroke 0, 0.02 above it, to (3.5, 0.02); its inner end snaps
+    drawing = DRAWING[:2] + [([(3.0, 2.0), (3.0, 0.03), (3.5, 0.02)], False)]
+    doc["cleaning"]["changes"][-1].update(distance=math.dist((3.5, 0.02), (3.0, 0.0)))
+    assert cl.limit_problems(drawing, doc) == []
+    # the same merge of a point far from every other stroke is no tail
+    drawing = DRAWING[:2] + [([(3.0, 2.0), (3.0, 0.03), (3.5, 0.9)], False)]
+    doc["cleaning"]["changes"][-1].update(distance=math.dist((3.5, 0.9), (3.0, 0.0)))
+    assert any("more than the tolerance from every other stroke" in p for p in cl.limit_problems(drawing, doc))
+    # a merge into a vertex no point was drawn near, with no snap there: beyond the merge distance
+    doc = cleaned()
+    doc["cleaning"]["changes"][0]["distance"] = 0.001
+    doc["cleaning"]["point_vertices"][0] = [0, 1, 7, 2]
+    assert any("no point of that vertex was drawn within" in p for p in cl.limit_problems(DRAWING, doc))
 
 
 def test_an_edge_on_two_paths_is_counted_within_the_tolerance_and_fails_beyond():
@@ -248,7 +295,21 @@ def test_an_edge_on_two_paths_is_counted_within_the_tolerance_and_fails_beyond()
     doc["cleaning"]["strokes"][1]["vertices"] = [3, 7, 4]
     doc["cleaning"]["strokes"][2]["vertices"] = [5, 6, 1, 6]  # stroke 2 along stroke 0's edge 1-6 (length 1)
     problems = cl.accounting_problems(DRAWING, doc, SIZE)
-    assert any("edges longer than the tolerance on two paths" in p for p in problems)
+    assert any("strokes [0, 2] run along each other for 1 (20 tolerances, 1 edges" in p for p in problems)
+    # many short edges along each other add up: stroke 1 drawn over stroke 0 in 0.05 steps
+    line = [(0.05 * k, 0.0) for k in range(21)]
+    drawing = [(line, False), (line[4:17], False)]
+    doc = {"vertices": [list(p) for p in line], "edges": [[k, k + 1] for k in range(20)],
+           "cleaning": {"tolerance": 0.1, "junctions_made": 0, "ends_snapped": 0, "points_merged": 13,
+                        "changes": [{"kind": "merge", "stroke": 1, "point": j, "other_stroke": 0,
+                                     "at": list(line[j + 4]), "distance": 0.0} for j in range(13)],
+                        "strokes": [{"vertices": list(range(21)), "cyclic": False},
+                                    {"vertices": list(range(4, 17)), "cyclic": False}],
+                        "point_vertices": [list(range(21)), list(range(4, 17))]}}
+    shared = []
+    problems = cl.accounting_problems(drawing, doc, 1.0, shared_edges=shared)
+    assert any("strokes [0, 1] run along each other for 0.6 (6 tolerances, 12 edges" in p for p in problems)
+    assert shared == []
 
 
 def test_short_stubs_neighbours_and_names():
