@@ -883,7 +883,7 @@ def check_refusals(cli, corpus, entry, work):
         if stroke is not None:
             ok = ok and names_stroke(lines[0] if lines else "", stroke)
         rows.append({"case": label, "from": entry["name"], "exit": code, "stderr": stderr.strip()[:300],
-                     "stroke": stroke, "ok": ok})
+                     "stdout": stdout.strip()[:300], "stroke": stroke, "ok": ok})
     return rows
 
 
@@ -958,8 +958,9 @@ def summarize(rows, pairs, refusals):
             failures.append({"name": p["name"], "what": "morph ends", "detail": p["problems"][0]})
     for r in refusals:
         if not r["ok"]:
-            failures.append({"name": r["from"], "what": f"refusal: {r['case']}",
-                             "detail": f"exit {r['exit']}: {r['stderr'][:200]}"})
+            said = (f"exit 0, not refused ({r.get('stdout', '')[:200]})" if r["exit"] == 0
+                    else f"exit {r['exit']}: {r['stderr'][:200]}")
+            failures.append({"name": r["from"], "what": f"refusal: {r['case']}", "detail": said})
     out["failures"] = failures
     return out
 
