@@ -5,7 +5,10 @@ or View3D > Sidebar > Stick Morph. They may share their vertices and edges
 (vertex i of one is vertex i of the other) or be drawn separately (they are
 matched by shape, steered by pins: vertex groups pin.* in both). The result
 is a new object whose absolute shape keys hold the morph of Surazhsky &
-Gotsman (2001), computed by the bundled native `stickmorph` module.
+Gotsman (2001), computed by the bundled native `stickmorph` module. Grease
+Pencil drawings and curves work too (issue 32): cleaned into stick figures
+first (every change reported), and a Grease Pencil source bakes into a
+Grease Pencil object with one drawing per frame.
 
 This file imports no bpy-dependent module at import time, so `core` can be
 imported outside Blender (tests, tools).
@@ -22,7 +25,8 @@ bl_info = {
     "version": (0, 1, 0),
     "blender": (3, 4, 0),
     "location": "View3D > Sidebar > Stick Morph; Object > Bake Stick Morph",
-    "description": "Morph planar stick figures (edge meshes) without self-intersection, baked to shape keys",
+    "description": "Morph planar stick figures (edge meshes, Grease Pencil drawings, curves) without "
+                   "self-intersection, baked to shape keys or Grease Pencil drawings",
     "category": "Animation",
 }
 
