@@ -391,21 +391,55 @@ bool Cleaner::join() {
   std::vector<std::pair<int, int>> ends(refs.size());
   std::map<std::pair<int, int>, int> by_vertices;
   std::vector<bool> repeated(refs.size(), false);  // an edge another path already has
+  std::vector<int> first_of(refs.size(), -1);      // ... and the segment that has it first
   for (std::size_t i = 0; i < refs.size(); ++i) {
     ends[i] = segment_vertices(refs[i]);
     geometry[i] = {position_[std::size_t(ends[i].first)], position_[std::size_t(ends[i].second)]};
     const auto key = std::minmax(ends[i].first, ends[i].second);
     const auto [it, fresh] = by_vertices.emplace(key, int(i));
     if (fresh) continue;
-    // The same two vertices joined twice: the strokes run along each other
-    // for the whole edge (or a stroke goes there and back). Within the
-    // tolerance that is what snapping and merging make of two strokes that
-    // meet at a shallow angle (a crossing a hair from a junction merges into
-    // it): they share that edge, which the figure has once. Longer, it was
-    // drawn so.
-    if (distance(geometry[i][0], geometry[i][1]) > tolerance_)
-      fail_overlap(refs[std::size_t(it->second)], refs[i], geometry[i][0], geometry[i][1]);
     repeated[i] = true;
+    first_of[i] = it->second;
+  }
+  // The same two vertices joined twice: the strokes run along each other
+  // for that edge (or a stroke goes there and back). One such edge alone,
+  // within the tolerance, is what snapping and merging make of two strokes
+  // that meet at a shallow angle (a crossing a hair from a junction merges
+  // into it): they share it, and the figure has it once. A longer one, or a
+  // chain of them (a stroke drawn over another, point on point), was drawn
+  // so: an overlap along a length.
+  {
+    std::unordered_map<int, std::vector<std::size_t>> at_vertex;
+    for (std::size_t i = 0; i < refs.size(); ++i)
+      if (repeated[i]) {
+        at_vertex[ends[i].first].push_back(i);
+        at_vertex[ends[i].second].push_back(i);
+      }
+    for (std::size_t i = 0; i < refs.size(); ++i) {
+      if (!repeated[i]) continue;
+      const bool chained = at_vertex[ends[i].first].size() > 1 || at_vertex[ends[i].second].size() > 1;
+      if (!chained && distance(geometry[i][0], geometry[i][1]) <= tolerance_) continue;
+      // Name the whole run: walk the chain of repeated edges both ways.
+      std::set<std::size_t> chain{i};
+      std::vector<int> frontier{ends[i].first, ends[i].second};
+      std::map<int, int> count;
+      while (!frontier.empty()) {
+        const int v = frontier.back();
+        frontier.pop_back();
+        for (std::size_t e : at_vertex[v])
+          if (chain.insert(e).second) {
+            frontier.push_back(ends[e].first);
+            frontier.push_back(ends[e].second);
+          }
+      }
+      for (std::size_t e : chain) ++count[ends[e].first], ++count[ends[e].second];
+      std::vector<int> tips;
+      for (const auto& [v, n] : count)
+        if (n == 1) tips.push_back(v);
+      const Vec2 from = tips.size() == 2 ? position_[std::size_t(tips[0])] : geometry[i][0];
+      const Vec2 to = tips.size() == 2 ? position_[std::size_t(tips[1])] : geometry[i][1];
+      fail_overlap(refs[std::size_t(first_of[i])], refs[i], from, to);
+    }
   }
   // Per segment, the vertices to insert into it; per pair of segments one
   // crossing at most (two segments meet in one point unless collinear).
@@ -631,6 +665,7 @@ bool Cleaner::snap() {
     struct Near {
       int segment;
       Vec2 at;
+      double distance;
       std::vector<int> others;  // the segments it was measured against
     };
     std::vector<Near> tail;
@@ -661,7 +696,7 @@ bool Cleaner::snap() {
       }
       if (best < 0) break;
       along = refs[std::size_t(best)].stroke;
-      tail.push_back({best, best_at, std::move(others)});
+      tail.push_back({best, best_at, best_distance, std::move(others)});
     }
     if (tail.empty()) continue;
     const int K = int(tail.size());
@@ -696,16 +731,20 @@ bool Cleaner::snap() {
           if (run.count(a) || run.count(b) || a == entry(k + 1) || b == entry(k + 1)) continue;
           const double d = distance(p, nearest_on_segment(p, position_[std::size_t(a)], position_[std::size_t(b)]));
           if (d > t) continue;
+          // Into a branch vertex within the tolerance: a zip moves points no
+          // further than a snap.
           for (int w : {a, b}) {
             const double dw = distance(p, position_[std::size_t(w)]);
-            if (dw < best_distance) best = w, best_stroke = refs[std::size_t(g)].stroke, best_distance = dw;
+            if (dw <= t && dw < best_distance) best = w, best_stroke = refs[std::size_t(g)].stroke, best_distance = dw;
           }
         }
         if (best < 0) break;
         onto.push_back(best);
         onto_stroke.push_back(best_stroke);
       }
-      if (zipped && k >= 1) {
+      // A run of the end alone next to J is a stub, not a zip: the snap
+      // rules below take it.
+      if (zipped && k >= 2) {
         // The branch must lead into J where the run does.
         const int junction = entry(k);
         const auto& around = neighbours[junction];
@@ -727,7 +766,7 @@ bool Cleaner::snap() {
       for (int g : tail[std::size_t(i)].others) {
         if (refs[std::size_t(g)].stroke != along) continue;
         const auto [c, d] = ends[std::size_t(g)];
-        if (segment_contact(a, b, position_[std::size_t(c)], position_[std::size_t(d)]) != SegmentContact::Disjoint)
+        if (segment_contact(a, b, position_[std::size_t(c)], position_[std::size_t(d)]) == SegmentContact::Crossing)
           crosses = true;
       }
     }
@@ -766,7 +805,7 @@ bool Cleaner::snap() {
           if (d <= t && d < meet_distance) meet = w, meet_at = k, meet_distance = d;
         }
     }
-    if (meet >= 0) {
+    if (meet >= 0 && tail[0].distance > 0) {
       // The segment of `meet` among those measured, for the stale check.
       int segment = -1;
       for (int g : tail[std::size_t(meet_at)].others)
@@ -774,7 +813,9 @@ bool Cleaner::snap() {
       snaps.push_back({end, meet_at, segment, meet, position_[std::size_t(meet)], {}, {}});
       continue;
     }
-    const int j = overlap && K < m ? K - 1 : 0;
+    // An end drawn exactly onto a stroke made its contact where the artist
+    // put it: that is the junction, whatever its tail does.
+    const int j = overlap && K < m && tail[0].distance > 0 ? K - 1 : 0;
     const Near& target = tail[std::size_t(j)];
     const Vec2 p = position_[std::size_t(entry(j))];
     const auto [a, b] = ends[std::size_t(target.segment)];
