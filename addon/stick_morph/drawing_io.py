@@ -31,7 +31,7 @@ import bpy
 import numpy as np
 
 from . import baking, core, drawings
-from .common import StickMorphError, is_pin_group
+from .common import CURVE_TYPES, GREASE_PENCIL_TYPES, StickMorphError, is_pin_group
 
 LEGACY_RADIUS_PER_PIXEL = 1.0 / 2000.0  # Blender's conversion of a legacy line width to a v3 radius
 CURVE_TYPE_POLY = 1  # GPv3's curve_type of a poly stroke (CurveType::CURVE_TYPE_POLY)
@@ -294,9 +294,9 @@ def read_figure(obj, role, choice, scene_frame, settings, depsgraph=None):
         pins = tuple(sorted(baking.vertex_groups(obj, is_pin_group)))
         delay = baking.delay_weights(obj, len(world), settings.delay_group) if role == "source" else None
         return drawings.MeshFigure(obj.name, world, edges, faces, pins, delay)
-    if obj.type in drawings.GREASE_PENCIL_TYPES:
+    if obj.type in GREASE_PENCIL_TYPES:
         return read_grease_pencil(obj, choice, scene_frame, depsgraph)
-    if obj.type in drawings.CURVE_TYPES:
+    if obj.type in CURVE_TYPES:
         return read_curve(obj, depsgraph)
     raise StickMorphError(f"the {role} '{obj.name}' is a {obj.type.lower()}, not a mesh, Grease Pencil or curve")
 
@@ -387,7 +387,7 @@ def build_grease_pencil_result(context, created, name, out_strokes, frames_world
     for key, value in tags.items():
         obj[key] = value
     collection.objects.link(obj)
-    if source.type in drawings.GREASE_PENCIL_TYPES:
+    if source.type in GREASE_PENCIL_TYPES:
         for slot in source.material_slots:
             data.materials.append(slot.material)
     else:

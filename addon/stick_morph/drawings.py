@@ -23,7 +23,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .common import CURVE_TYPES, FIGURE_TYPES, GREASE_PENCIL_TYPES, BakeSettings, StickMorphError  # noqa: F401
+from .common import GREASE_PENCIL_TYPES, BakeSettings, StickMorphError
 from .correspondence import _BY_INDEX, Pin, check_pins, compare_edge_sets
 from .morph import PreparedPair, prepare_projected, refuse_faces
 from .native import load_engine
