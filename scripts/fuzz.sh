@@ -14,7 +14,7 @@
 set -euo pipefail
 
 usage() {
-  echo "usage: scripts/fuzz.sh --target figure_reader|morph_pair|correspond_pair --time SECONDS [--build-dir DIR]" >&2
+  echo "usage: scripts/fuzz.sh --target figure_reader|morph_pair|correspond_pair|clean_drawing --time SECONDS [--build-dir DIR]" >&2
 }
 
 target="" seconds="" build_dir=build-sanitize
@@ -28,8 +28,8 @@ while [[ $# -gt 0 ]]; do
   esac
 done
 case "$target" in
-  figure_reader|morph_pair|correspond_pair) ;;
-  *) echo "scripts/fuzz.sh: --target must be figure_reader, morph_pair or correspond_pair, got '$target'" >&2; usage; exit 2 ;;
+  figure_reader|morph_pair|correspond_pair|clean_drawing) ;;
+  *) echo "scripts/fuzz.sh: --target must be figure_reader, morph_pair, correspond_pair or clean_drawing, got '$target'" >&2; usage; exit 2 ;;
 esac
 if ! [[ "$seconds" =~ ^[1-9][0-9]*$ ]]; then
   echo "scripts/fuzz.sh: --time needs a whole number of seconds, got '$seconds'" >&2; usage; exit 2

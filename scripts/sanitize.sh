@@ -71,7 +71,7 @@ export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:symbolize=1"
 section "C++ tests under ASan + UBSan (ctest)"
 ctest --test-dir "$build_dir" -j2 --output-on-failure
 
-for target in figure_reader morph_pair correspond_pair; do
+for target in figure_reader morph_pair correspond_pair clean_drawing; do
   section "Fuzz $target for ${fuzz_seconds}s"
   bash scripts/fuzz.sh --target "$target" --time "$fuzz_seconds" --build-dir "$build_dir"
 done

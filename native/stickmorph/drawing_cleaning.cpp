@@ -146,6 +146,11 @@ class Cleaner {
     const std::size_t next = (std::size_t(r.entry) + 1) % path.size();
     return {path[std::size_t(r.entry)].vertex, path[next].vertex};
   }
+  std::vector<bool> repeated_segments(const std::vector<SegmentRef>& refs);
+  std::unordered_map<int, std::vector<int>> points_by_vertex();
+  void record_move(int vertex, DrawingChangeKind kind, int other_stroke, int lands,
+                   const std::unordered_map<int, std::vector<int>>& points_of);
+  bool remove_spikes();
   bool join();
   bool snap();
   [[noreturn]] void fail_overlap(const SegmentRef& a, const SegmentRef& b, const Vec2& from, const Vec2& to);
@@ -166,6 +171,7 @@ class Cleaner {
     int point;   // the input point that moved (-1 none): `distance` is read at the end
   };
   std::vector<Record> records_;
+  std::vector<bool> recorded_;  // per input point: a merge or snap names it already
   int crossings_ = 0, touches_ = 0, snaps_ = 0, merges_ = 0;
 };
 
@@ -228,6 +234,7 @@ void Cleaner::merge_points() {
     if (j < i) earlier[std::size_t(i)].push_back(j);
   });
   point_vertex_.assign(point_count, -1);
+  recorded_.assign(point_count, false);
   std::vector<bool> represents(point_count, false);  // the point made a vertex of its own
   for (std::size_t p = 0; p < point_count; ++p) {
     const Vec2& at = in_.points[p];
@@ -251,6 +258,7 @@ void Cleaner::merge_points() {
     change.point = reported_point(int(p));
     change.other_stroke = point_stroke_[std::size_t(best)];
     records_.push_back({change, point_vertex_[p], int(p)});
+    recorded_[p] = true;
   }
   paths_.resize(in_.strokes.size());
   for (std::size_t s = 0; s < in_.strokes.size(); ++s)
@@ -310,28 +318,17 @@ bool Cleaner::merge_vertices() {
   });
   if (close.empty()) return false;
   std::sort(close.begin(), close.end());
-  // The first input point of each vertex, to name a moved point.
-  std::unordered_map<int, int> first_point;
-  for (std::size_t p = 0; p < point_vertex_.size(); ++p) {
-    const int v = find(point_vertex_[p]);
-    if (!first_point.count(v)) first_point[v] = int(p);
-  }
+  const auto points_of = points_by_vertex();
   bool merged = false;
   for (const auto& [kept, gone] : close) {
     const int a = find(kept), b = find(gone);
     if (a == b) continue;
     const int keep = std::min(a, b), drop = std::max(a, b);
+    const auto kept_points = points_of.find(keep);
+    const int other = kept_points == points_of.end() ? -1 : reported_stroke(kept_points->second.front());
+    record_move(drop, DrawingChangeKind::Merge, other, keep, points_of);
     parent_[std::size_t(drop)] = keep;
     merged = true;
-    const auto it = first_point.find(drop);
-    if (it == first_point.end()) continue;  // a junction vertex merging: its record reads the final place
-    ++merges_;
-    DrawingChange change{DrawingChangeKind::Merge};
-    change.stroke = reported_stroke(it->second);
-    change.point = reported_point(it->second);
-    const auto kept_point = first_point.find(keep);
-    change.other_stroke = kept_point == first_point.end() ? -1 : reported_stroke(kept_point->second);
-    records_.push_back({change, keep, it->second});
   }
   if (merged) normalize_paths();
   return merged;
@@ -385,8 +382,11 @@ std::pair<Vec2, Vec2> shared_span(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
 }
 
 // Crossings and touchings become shared vertices. Returns whether any did.
-bool Cleaner::join() {
-  const std::vector<SegmentRef> refs = segments();
+// The segments whose two vertices an earlier segment already joins (an
+// edge two paths share), after refusing the ones that are an overlap along
+// a length (see inside). Called before any snapping too, so that a snap
+// cannot split an overlap the artist drew into something that passes.
+std::vector<bool> Cleaner::repeated_segments(const std::vector<SegmentRef>& refs) {
   std::vector<Segment> geometry(refs.size());
   std::vector<std::pair<int, int>> ends(refs.size());
   std::map<std::pair<int, int>, int> by_vertices;
@@ -441,6 +441,95 @@ bool Cleaner::join() {
       fail_overlap(refs[std::size_t(first_of[i])], refs[i], from, to);
     }
   }
+  return repeated;
+}
+
+// The input points of each vertex, as the union-find has them now.
+std::unordered_map<int, std::vector<int>> Cleaner::points_by_vertex() {
+  std::unordered_map<int, std::vector<int>> points_of;
+  for (std::size_t p = 0; p < point_vertex_.size(); ++p) points_of[find(point_vertex_[p])].push_back(int(p));
+  return points_of;
+}
+
+// `vertex` moves or merges into `lands`: each of its input points that no
+// change names yet gets one (the first `kind`, the rest merges), so that
+// every point not where it was drawn is named. A point keeps its first
+// record: its distance is read at the end, from where it finally is.
+// `points_of` is taken before the stage moved anything.
+void Cleaner::record_move(int vertex, DrawingChangeKind kind, int other_stroke, int lands,
+                          const std::unordered_map<int, std::vector<int>>& points_of) {
+  const auto it = points_of.find(vertex);
+  if (it == points_of.end()) return;  // a junction vertex: its record reads the final place
+  for (int p : it->second) {
+    if (recorded_[std::size_t(p)]) continue;
+    recorded_[std::size_t(p)] = true;
+    DrawingChange change{kind};
+    change.stroke = reported_stroke(p);
+    change.point = reported_point(p);
+    change.other_stroke = other_stroke;
+    records_.push_back({change, lands, p});
+    if (kind == DrawingChangeKind::Merge) ++merges_;
+    kind = DrawingChangeKind::Merge;
+  }
+}
+
+// A spike: a stroke that steps out to a vertex nothing else reaches and
+// straight back (x, v, x), within the tolerance. It has no width to draw, it
+// would leave v dangling inside the stroke (a free end that is no stroke's
+// end), and a longer one is a retrace (repeated_segments). v merges into x.
+bool Cleaner::remove_spikes() {
+  std::unordered_map<int, std::set<int>> neighbours;
+  for (const SegmentRef& r : segments()) {
+    const auto [a, b] = segment_vertices(r);
+    neighbours[a].insert(b);
+    neighbours[b].insert(a);
+  }
+  const auto points_of = points_by_vertex();
+  bool any = false;
+  for (std::size_t s = 0; s < paths_.size(); ++s) {
+    auto& path = paths_[s];
+    const std::size_t n = path.size();
+    if (n < 3) {
+      // A cyclic stroke of two vertices goes there and back: a retrace if
+      // longer than the tolerance (repeated_segments), else a dot.
+      if (n == 2 && in_.cyclic[s] &&
+          distance(position_[std::size_t(path[0].vertex)], position_[std::size_t(path[1].vertex)]) <= tolerance_)
+        throw InvalidDrawingError(DrawingDefect::CollapsedStroke,
+                                  stroke_name(int(s)) + " goes out and back within the tolerance " +
+                                      format_double(tolerance_) + " from " +
+                                      point_text(position_[std::size_t(path[0].vertex)]) + ": nothing to draw",
+                                  int(s), 0);
+      continue;
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      if (!in_.cyclic[s] && (k == 0 || k + 1 == n)) continue;
+      const int before = path[(k + n - 1) % n].vertex, v = path[k].vertex, after = path[(k + 1) % n].vertex;
+      if (before != after || neighbours[v].size() != 1 || find(v) != v) continue;
+      if (distance(position_[std::size_t(v)], position_[std::size_t(before)]) > tolerance_) continue;
+      if (!in_.cyclic[s] && n == 3)
+        throw InvalidDrawingError(DrawingDefect::CollapsedStroke,
+                                  stroke_name(int(s)) + " goes out and back within the tolerance " +
+                                      format_double(tolerance_) + " from " +
+                                      point_text(position_[std::size_t(before)]) + ": nothing to draw",
+                                  int(s), 0);
+      record_move(v, DrawingChangeKind::Merge, int(s), before, points_of);
+      parent_[std::size_t(v)] = before;
+      any = true;
+    }
+  }
+  if (any) normalize_paths();
+  return any;
+}
+
+bool Cleaner::join() {
+  const std::vector<SegmentRef> refs = segments();
+  std::vector<Segment> geometry(refs.size());
+  std::vector<std::pair<int, int>> ends(refs.size());
+  for (std::size_t i = 0; i < refs.size(); ++i) {
+    ends[i] = segment_vertices(refs[i]);
+    geometry[i] = {position_[std::size_t(ends[i].first)], position_[std::size_t(ends[i].second)]};
+  }
+  const std::vector<bool> repeated = repeated_segments(refs);
   // Per segment, the vertices to insert into it; per pair of segments one
   // crossing at most (two segments meet in one point unless collinear).
   std::vector<std::vector<int>> inserts(refs.size());
@@ -576,9 +665,11 @@ bool Cleaner::snap() {
     if (neighbours[paths_[s].back().vertex].size() == 1) free_ends.push_back({int(s), true});
   }
   if (free_ends.empty()) return false;
-  // Where strokes begin and end, joined or not: where strokes meet.
+  // Where strokes begin and end, joined or not: where strokes meet. (Not
+  // for a figure, whose every vertex ends an edge: there a junction is a
+  // junction by its degree.)
   std::unordered_set<int> stroke_ends;
-  for (std::size_t s = 0; s < paths_.size(); ++s)
+  for (std::size_t s = 0; s < paths_.size() && !in_.from_figure; ++s)
     if (!in_.cyclic[s] && !paths_[s].empty()) {
       stroke_ends.insert(paths_[s].front().vertex);
       stroke_ends.insert(paths_[s].back().vertex);
@@ -641,9 +732,7 @@ bool Cleaner::snap() {
       }
     }
   };
-  // The first input point of each vertex, to name merged tail points.
-  std::unordered_map<int, int> first_point;
-  for (std::size_t p = 0; p < point_vertex_.size(); ++p) first_point.emplace(find(point_vertex_[p]), int(p));
+  const auto points_of = points_by_vertex();
 
   struct Snap {
     FreeEnd end;
@@ -801,6 +890,12 @@ bool Cleaner::snap() {
       for (int g : tail[std::size_t(k)].others)
         for (int w : {ends[std::size_t(g)].first, ends[std::size_t(g)].second}) {
           if ((neighbours[w].size() == 2 && !stroke_ends.count(w)) || tail_vertices.count(w)) continue;
+          // Never onto a vertex the next one already joins: that would
+          // double the edge between them.
+          if (k < m) {
+            const auto& joined = neighbours[entry(k + 1)];
+            if (std::find(joined.begin(), joined.end(), w) != joined.end()) continue;
+          }
           const double d = distance(p, position_[std::size_t(w)]);
           if (d <= t && d < meet_distance) meet = w, meet_at = k, meet_distance = d;
         }
@@ -815,37 +910,48 @@ bool Cleaner::snap() {
     }
     // An end drawn exactly onto a stroke made its contact where the artist
     // put it: that is the junction, whatever its tail does.
-    const int j = overlap && K < m && tail[0].distance > 0 ? K - 1 : 0;
-    const Near& target = tail[std::size_t(j)];
-    const Vec2 p = position_[std::size_t(entry(j))];
-    const auto [a, b] = ends[std::size_t(target.segment)];
-    // Onto an end of the segment rather than a new vertex beside it: if the
-    // foot is within a quarter tolerance of it (a new vertex that close
-    // would leave a sliver edge, which the morph's triangulation pays for),
-    // or if it is a free end within the tolerance (two ends meet).
-    int onto = -1;
-    for (int w : {a, b}) {
-      const Vec2& pw = position_[std::size_t(w)];
-      const bool close = distance(target.at, pw) <= 0.25 * t || neighbours[w].size() == 1;
-      if (close && distance(p, pw) <= t && (onto < 0 || distance(p, pw) < distance(p, position_[std::size_t(onto)])))
-        onto = w;
-    }
-    // The vertex before the snapping one already joins the target: the new
-    // edge would double an edge (or fold onto one). The end is a stub along
-    // its neighbour's edges, as where a ring's end point landed on its
-    // second point and its first dangles: it merges into that neighbour.
-    if (j < m) {
-      const int before = entry(j + 1);
-      const auto& joined = neighbours[before];
-      const bool doubles = onto >= 0 ? std::find(joined.begin(), joined.end(), onto) != joined.end()
-                                     : (a == before || b == before);
-      if (doubles) {
-        if (distance(p, position_[std::size_t(before)]) <= kSnapExclusionTolerances * t)
-          snaps.push_back({end, j, target.segment, before, position_[std::size_t(before)], {}, {}});
-        continue;
+    // The tail's inner end if the tail is an overlap, else (or if that
+    // snap is impossible) the end itself. Trying the end last keeps a
+    // drawing that cleaned to a standstill standing still as a figure,
+    // whose strokes are single edges (a cleaned figure cleans to itself).
+    std::vector<int> choices;
+    if (overlap && K < m && tail[0].distance > 0 && K > 1) choices.push_back(K - 1);
+    choices.push_back(0);
+    for (int j : choices) {
+      const Near& target = tail[std::size_t(j)];
+      const Vec2 p = position_[std::size_t(entry(j))];
+      const auto [a, b] = ends[std::size_t(target.segment)];
+      // Onto an end of the segment rather than a new vertex beside it: if
+      // the foot is within a quarter tolerance of it (a new vertex that
+      // close would leave a sliver edge, which the morph's triangulation
+      // pays for), or if it is a free end within the tolerance (two ends
+      // meet).
+      int onto = -1;
+      for (int w : {a, b}) {
+        const Vec2& pw = position_[std::size_t(w)];
+        const bool close = distance(target.at, pw) <= 0.25 * t || neighbours[w].size() == 1;
+        if (close && distance(p, pw) <= t && (onto < 0 || distance(p, pw) < distance(p, position_[std::size_t(onto)])))
+          onto = w;
       }
+      // The vertex before the snapping one already joins the target: the
+      // new edge would double an edge (or fold onto one). The end is a stub
+      // along its neighbour's edges, as where a ring's end point landed on
+      // its second point and its first dangles: it merges into that
+      // neighbour if that is near, else this choice is no snap.
+      if (j < m) {
+        const int before = entry(j + 1);
+        const auto& joined = neighbours[before];
+        const bool doubles = onto >= 0 ? std::find(joined.begin(), joined.end(), onto) != joined.end()
+                                       : (a == before || b == before);
+        if (doubles) {
+          if (distance(p, position_[std::size_t(before)]) > kSnapExclusionTolerances * t) continue;
+          snaps.push_back({end, j, target.segment, before, position_[std::size_t(before)], {}, {}});
+          break;
+        }
+      }
+      snaps.push_back({end, j, target.segment, onto, onto >= 0 ? position_[std::size_t(onto)] : target.at, {}, {}});
+      break;
     }
-    snaps.push_back({end, j, target.segment, onto, onto >= 0 ? position_[std::size_t(onto)] : target.at, {}, {}});
   }
   if (snaps.empty()) return false;
   // Apply in order; a snap whose vertices a previous snap of this round
@@ -867,19 +973,14 @@ bool Cleaner::snap() {
       for (int k = 0; k < snap.trimmed; ++k) {
         const int gone = entry(k).vertex;
         const int lands = snap.zip_onto[std::size_t(k)];
+        // The end itself is the snap; the run behind it merges.
+        record_move(gone, k == 0 ? DrawingChangeKind::Snap : DrawingChangeKind::Merge,
+                    snap.zip_strokes[std::size_t(k)], lands, points_of);
         parent_[std::size_t(gone)] = lands;
         moved.insert(gone);
         moved.insert(lands);
-        const auto it = first_point.find(gone);
-        if (it == first_point.end()) continue;
-        // The end itself is the snap; the run behind it merges.
-        DrawingChange change{k == 0 ? DrawingChangeKind::Snap : DrawingChangeKind::Merge};
-        change.stroke = reported_stroke(it->second);
-        change.point = reported_point(it->second);
-        change.other_stroke = snap.zip_strokes[std::size_t(k)];
-        records_.push_back({change, lands, it->second});
-        ++(k == 0 ? snaps_ : merges_);
       }
+      ++snaps_;
       moved.insert(entry(snap.trimmed).vertex);
       trims.emplace_back(snap.end.stroke, snap.end.back ? -snap.trimmed : snap.trimmed);
       any = true;
@@ -906,26 +1007,15 @@ bool Cleaner::snap() {
     }
     // A stub folded onto its own neighbour merges; anything else snaps.
     const bool into_neighbour = snap.trimmed < m && snap.vertex == entry(snap.trimmed + 1).vertex;
-    DrawingChange change{into_neighbour ? DrawingChangeKind::Merge : DrawingChangeKind::Snap};
-    const int point = snapping.point >= 0 ? snapping.point : (first_point.count(v) ? first_point.at(v) : -1);
-    change.stroke = point >= 0 ? reported_stroke(point) : snap.end.stroke;
-    change.point = point >= 0 ? reported_point(point) : -1;
-    change.other_stroke = into_neighbour ? snap.end.stroke : other_stroke;
-    records_.push_back({change, lands, point});
-    ++(into_neighbour ? merges_ : snaps_);
+    record_move(v, into_neighbour ? DrawingChangeKind::Merge : DrawingChangeKind::Snap,
+                into_neighbour ? snap.end.stroke : other_stroke, lands, points_of);
+    if (!into_neighbour) ++snaps_;
     // The tail beyond it merges into the junction.
     for (int k = 0; k < snap.trimmed; ++k) {
       const int gone = entry(k).vertex;
+      record_move(gone, DrawingChangeKind::Merge, other_stroke, lands, points_of);
       parent_[std::size_t(gone)] = lands;
       moved.insert(gone);
-      const auto it = first_point.find(gone);
-      if (it == first_point.end()) continue;
-      ++merges_;
-      DrawingChange merge{DrawingChangeKind::Merge};
-      merge.stroke = reported_stroke(it->second);
-      merge.point = reported_point(it->second);
-      merge.other_stroke = other_stroke;
-      records_.push_back({merge, lands, it->second});
     }
     if (snap.trimmed > 0) trims.emplace_back(snap.end.stroke, snap.end.back ? -snap.trimmed : snap.trimmed);
     if (snap.trimmed + 1 <= m) moved.insert(entry(snap.trimmed + 1).vertex);
@@ -1042,10 +1132,12 @@ CleanedDrawing Cleaner::assemble() {
 CleanedDrawing Cleaner::run() {
   check_input();
   merge_points();
+  repeated_segments(segments());  // an overlap as drawn is refused before anything moves
   for (int round = 0; round < kMaxRounds; ++round) {
     // Merging first: a rounded crossing may land within the merge distance
     // of a vertex, which join() would otherwise see as a touch.
     bool changed = merge_vertices();
+    changed = remove_spikes() || changed;
     // Snapping before joining: an end that overshot a stroke by less than
     // the tolerance is pulled back onto it (a T, as meant), rather than
     // crossing it and leaving a stub that the junction then shields.

@@ -196,6 +196,10 @@ TEST_CASE("clean_drawing: bad drawings name the stroke", "[clean_drawing]") {
         "strokes 0 and 1 overlap along a length", 0);
   fails({{{0, 0}, {5, 0}, {5, 5}, {5, 1}}}, DrawingDefect::Retrace, "stroke 0 retraces itself", 0);
   fails({{{0, 0}, {5, 0}}}, DrawingDefect::Retrace, "stroke 0 retraces itself", 0, {true});
+  // An end within the tolerance of a retrace must not split it into
+  // something that passes (fuzz_clean_drawing's first finding).
+  fails({{{12, 12}, {0, 0}, {12, 12}}, {{-0.1, 2}, {14, 12}}}, DrawingDefect::Retrace, "stroke 0 retraces itself", 0,
+        {true, false});
   fails({{{0, 0}, {NAN, 0}}}, DrawingDefect::NonFiniteCoordinate, "point 1 of stroke 0 is not finite", 0);
   CHECK_THROWS_AS(clean_drawing(drawing_from_strokes({{{0, 0}, {1, 0}}}), DrawingCleaningOptions{-1.0}),
                   InvalidArgumentError);
