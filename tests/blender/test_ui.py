@@ -266,9 +266,10 @@ def test_options_a_motion_does_not_use_are_greyed_out(scene, addon, motion):
                          + draw(bpy.types.VIEW3D_PT_stick_morph_advanced, bpy.context))
     greyed = {name for name, on in active.items() if not on}
     timing = {"delay_group", "overlap"}  # issue 31's local timing: Rigid only
-    expected = {"RIGID": set(), "BARYCENTRIC": {"rotation", "turns"} | timing,
+    cleaning = {"clean_tolerance"}  # issue 32: drawings only, and the tree pair is two meshes
+    expected = {"RIGID": cleaning, "BARYCENTRIC": {"rotation", "turns"} | timing | cleaning,
                 "LINEAR": {"rotation", "turns", "steiner", "weights", "enclosure_sides", "show_triangulation"}
-                | timing}
+                | timing | cleaning}
     assert greyed == expected[motion]
     # The redo panel greys out the same rows, from the operator's own motion.
     op = bpy.context.window_manager.operator_properties_last("object.stick_morph_bake")
