@@ -793,8 +793,7 @@ bool Cleaner::snap() {
     // another branch of J, within the tolerance, vertex by vertex: a ring
     // closed past its start whose end already landed on one of its first
     // points leaves its start dangling along its end that way. The whole run
-    // merges into that branch, each vertex into the branch's nearest vertex,
-    // and the stroke now starts at J.
+    // merges into J, and the stroke now starts (or ends) there.
     {
       std::vector<int> onto;
       std::vector<int> onto_stroke;
@@ -970,15 +969,20 @@ bool Cleaner::snap() {
       for (int k = 0; k <= snap.trimmed && !stale; ++k) stale = moved.count(entry(k).vertex) > 0;
       for (int w : snap.zip_onto) stale = stale || moved.count(w) > 0;
       if (stale) continue;
+      // The run merges into J, where the stroke now starts (or ends): its
+      // points then come first (or last) along the path, in drawing order.
+      // (The branch vertices beside them are nearer, but the stroke passes
+      // them again at its other end: a point mapped there would be out of
+      // order along the path, which a Grease Pencil result walks.)
+      const int junction = entry(snap.trimmed).vertex;
       for (int k = 0; k < snap.trimmed; ++k) {
         const int gone = entry(k).vertex;
-        const int lands = snap.zip_onto[std::size_t(k)];
         // The end itself is the snap; the run behind it merges.
         record_move(gone, k == 0 ? DrawingChangeKind::Snap : DrawingChangeKind::Merge,
-                    snap.zip_strokes[std::size_t(k)], lands, points_of);
-        parent_[std::size_t(gone)] = lands;
+                    snap.zip_strokes[std::size_t(k)], junction, points_of);
+        parent_[std::size_t(gone)] = junction;
         moved.insert(gone);
-        moved.insert(lands);
+        moved.insert(snap.zip_onto[std::size_t(k)]);
       }
       ++snaps_;
       moved.insert(entry(snap.trimmed).vertex);
@@ -1276,11 +1280,29 @@ void validate_cleaning(const CleanedDrawing& cleaned, const Drawing& drawing) {
              std::to_string(edge.second) + ", not an edge");
       on_paths.insert(edge);
     }
-    // Every input point of the stroke is on its path.
+    // Every input point of the stroke is on its path, in drawing order (a
+    // Grease Pencil result walks the path and finds each point's place on
+    // it): each at or after the place of the one before; a cyclic stroke's
+    // last points may be back at its first vertex (a closing repeat).
+    std::size_t place = 0;
+    bool wrapped = false;
     for (int p : drawing.strokes[s]) {
       const int v = cleaned.point_vertex[std::size_t(p)];
       if (std::find(path.begin(), path.end(), v) == path.end())
         fail("point " + std::to_string(p) + " of stroke " + std::to_string(s) + " is not on its path");
+      if (wrapped) {
+        if (v != path[0]) fail("stroke " + std::to_string(s) + " passes its points out of order");
+        continue;
+      }
+      std::size_t at = place;
+      while (at < path.size() && path[at] != v) ++at;
+      if (at < path.size()) {
+        place = at;
+      } else if (cleaned.cyclic[s] && v == path[0]) {
+        wrapped = true;
+      } else {
+        fail("stroke " + std::to_string(s) + " passes its points out of order (point " + std::to_string(p) + ")");
+      }
     }
   }
   if (on_paths != edges) fail("an edge lies on no stroke");
