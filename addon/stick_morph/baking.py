@@ -468,6 +468,21 @@ def previous_results(source_name, target_name):
             and obj.get(SOURCE) == source_name and obj.get(TARGET) == target_name]
 
 
+def new_result_object(context, created, name, data, origin, tags):
+    """A new object `name` of `data` (recorded in created, so that a failed
+    bake removes it), located at origin, with the custom properties `tags`,
+    linked into the context's collection: what every kind of result starts as."""
+    collection = context.collection or context.scene.collection
+    obj = bpy.data.objects.new(name, data)
+    created.objects.append(obj)
+    created.names[obj] = name
+    obj.location = origin
+    for key, value in tags.items():
+        obj[key] = value
+    collection.objects.link(obj)
+    return obj
+
+
 def add_result_object(context, created, name, frames_world, edges, origin, frame_start, settings, size, tags,
                       report_progress=None):
     """A new object `name` (recorded in created) in the context's collection:
@@ -475,15 +490,8 @@ def add_result_object(context, created, name, frames_world, edges, origin, frame
     (world space, (N, V, 3)) as absolute shape keys from frame_start, with
     the tubes if settings.renderable (radius settings.tube_radius of size)
     and the custom properties `tags`. The caller removes `created` on failure."""
-    collection = context.collection or context.scene.collection
     mesh = _new_mesh(name, np.asarray(frames_world[0], dtype=np.float64) - origin, edges)
-    obj = bpy.data.objects.new(name, mesh)
-    created.objects.append(obj)
-    created.names[obj] = name
-    obj.location = origin
-    for key, value in tags.items():
-        obj[key] = value
-    collection.objects.link(obj)
+    obj = new_result_object(context, created, name, mesh, origin, tags)
     bake_absolute_keys(obj, frames_world, frame_start, report_progress, origin)
     if settings.renderable:
         group, made = add_tubes(obj, core.tube_radius(size, settings.tube_radius))

@@ -378,15 +378,8 @@ def build_grease_pencil_result(context, created, name, out_strokes, frames_world
     runs through in that frame. Materials: the source's (a Grease Pencil
     source), else one black ink. Thickness: the source's per point values,
     else the tube radius (settings.tube_radius of size)."""
-    collection = context.collection or context.scene.collection
     data = _gp_collection().new(name)
-    obj = bpy.data.objects.new(name, data)
-    created.objects.append(obj)
-    created.names[obj] = name
-    obj.location = origin
-    for key, value in tags.items():
-        obj[key] = value
-    collection.objects.link(obj)
+    obj = baking.new_result_object(context, created, name, data, origin, tags)
     if source.type in GREASE_PENCIL_TYPES:
         for slot in source.material_slots:
             data.materials.append(slot.material)

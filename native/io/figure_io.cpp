@@ -58,6 +58,32 @@ const JsonValue& require_member(const JsonValue& figure, const char* key,
   return *member;
 }
 
+// One [x, y] entry; `name()` says which in a message ("vertex 3",
+// "stroke 2, point 7").
+template <typename Name>
+Vec2 read_point(const JsonValue& entry, const Name& name, const ShapeErrors& errors) {
+  if (!entry.is_array() || entry.as_array().size() != 2)
+    errors.fail(entry, name() + " must be an array of 2 numbers [x, y], got " + describe_shape(entry));
+  Vec2 position{};
+  for (std::size_t axis = 0; axis < 2; ++axis) {
+    const JsonValue& coordinate = entry.as_array()[axis];
+    if (!coordinate.is_number())
+      errors.fail(coordinate, name() + ": expected a number for " + (axis == 0 ? "x" : "y") + ", got " +
+                                  describe_kind(coordinate.kind()));
+    position[axis] = coordinate.as_number();
+  }
+  return position;
+}
+
+// The JSON document of `text`, its syntax errors prefixed with the origin.
+JsonValue parse_document(const std::string& text, const ShapeErrors& errors) {
+  try {
+    return parse_json(text);
+  } catch (const JsonError& error) {
+    throw JsonError(errors.prefix() + error.what());
+  }
+}
+
 std::vector<Vec2> read_vertices(const JsonValue& list, const ShapeErrors& errors) {
   if (!list.is_array()) {
     errors.fail(list, std::string("\"vertices\" must be an array of [x, y] pairs, got ") +
@@ -67,21 +93,7 @@ std::vector<Vec2> read_vertices(const JsonValue& list, const ShapeErrors& errors
   vertices.reserve(list.as_array().size());
   for (const JsonValue& entry : list.as_array()) {
     // Built only for a message: a figure may have millions of vertices.
-    const auto name = [&vertices] { return "vertex " + std::to_string(vertices.size()); };
-    if (!entry.is_array() || entry.as_array().size() != 2) {
-      errors.fail(entry,
-                  name() + " must be an array of 2 numbers [x, y], got " + describe_shape(entry));
-    }
-    Vec2 position{};
-    for (std::size_t axis = 0; axis < 2; ++axis) {
-      const JsonValue& coordinate = entry.as_array()[axis];
-      if (!coordinate.is_number()) {
-        errors.fail(coordinate, name() + ": expected a number for " + (axis == 0 ? "x" : "y") +
-                                    ", got " + describe_kind(coordinate.kind()));
-      }
-      position[axis] = coordinate.as_number();
-    }
-    vertices.push_back(position);
+    vertices.push_back(read_point(entry, [&vertices] { return "vertex " + std::to_string(vertices.size()); }, errors));
   }
   return vertices;
 }
@@ -132,12 +144,7 @@ std::vector<std::array<std::int64_t, 2>> read_edges(const JsonValue& list,
 
 StickFigure parse_figure(const std::string& text, const std::string& origin) {
   const ShapeErrors errors(origin);
-  JsonValue document;
-  try {
-    document = parse_json(text);
-  } catch (const JsonError& error) {
-    throw JsonError(errors.prefix() + error.what());
-  }
+  const JsonValue document = parse_document(text, errors);
   if (!document.is_object()) {
     errors.fail(document, std::string("a figure file must hold a JSON object with \"vertices\" "
                                       "and \"edges\", got ") +
@@ -239,20 +246,9 @@ std::vector<std::vector<Vec2>> read_strokes(const JsonValue& list, const ShapeEr
     if (!points->is_array())
       errors.fail(*points, name + ": \"points\" must be an array of [x, y] pairs, got " + describe_kind(points->kind()));
     std::vector<Vec2> stroke;
-    for (const JsonValue& point : points->as_array()) {
-      const std::string where = name + ", point " + std::to_string(stroke.size());
-      if (!point.is_array() || point.as_array().size() != 2)
-        errors.fail(point, where + " must be an array of 2 numbers [x, y], got " + describe_shape(point));
-      Vec2 at{};
-      for (std::size_t axis = 0; axis < 2; ++axis) {
-        const JsonValue& coordinate = point.as_array()[axis];
-        if (!coordinate.is_number())
-          errors.fail(coordinate, where + ": expected a number for " + (axis == 0 ? "x" : "y") + ", got " +
-                                      describe_kind(coordinate.kind()));
-        at[axis] = coordinate.as_number();
-      }
-      stroke.push_back(at);
-    }
+    for (const JsonValue& point : points->as_array())
+      stroke.push_back(
+          read_point(point, [&] { return name + ", point " + std::to_string(stroke.size()); }, errors));
     bool closed = false;
     if (const JsonValue* flag = entry.find("cyclic")) {
       if (!flag->is_bool()) errors.fail(*flag, name + ": \"cyclic\" must be true or false, got " + describe_kind(flag->kind()));
@@ -268,12 +264,7 @@ std::vector<std::vector<Vec2>> read_strokes(const JsonValue& list, const ShapeEr
 
 Drawing parse_drawing(const std::string& text, const std::string& origin) {
   const ShapeErrors errors(origin);
-  JsonValue document;
-  try {
-    document = parse_json(text);
-  } catch (const JsonError& error) {
-    throw JsonError(errors.prefix() + error.what());
-  }
+  const JsonValue document = parse_document(text, errors);
   if (!document.is_object())
     errors.fail(document, std::string("a drawing file must hold a JSON object with \"strokes\" (or a figure's "
                                       "\"vertices\" and \"edges\"), got ") +
