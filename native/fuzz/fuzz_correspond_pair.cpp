@@ -433,6 +433,16 @@ void correspond_pair(const PairInput& input) {
                            error.what());
     fuzz::trace(std::string("below resolution: ") + error.what());
     return;
+  } catch (const NumericRangeError& error) {
+    // Below the resolution limit the engine may also refuse the numbers
+    // themselves: features 2^-40 of a figure's extent apart, scaled back
+    // from the working scale, can leave dummies below the smallest normal
+    // double (figure_correspondence.cpp). Above it, a finding.
+    if (!below_resolution(input.source) && !below_resolution(input.target))
+      fuzz::report_finding(std::string("correspond_figures refused the numbers of a pair above the resolution "
+                                       "limit: ") + error.what());
+    fuzz::trace(std::string("below resolution: ") + error.what());
+    return;
   } catch (const Error& error) {
     // Both figures are valid (make_stick_figure), so an InvalidFigureError
     // would be about something the engine built.
