@@ -24,6 +24,9 @@ packages=(
   python3-numpy
   python3-pytest
   python3-matplotlib  # the plots of BENCHMARKS.md (bench/make_benchmarks.py)
+  python3-build python3-venv  # the engine's wheel (pyproject.toml) and its offline pip install test
+  python3-yaml        # tests/python/test_release_workflow.py reads .github/workflows/release.yml
+  python3-mypy        # tests/python/test_stubs.py and test_wheel.py type-check against the stubs
   libegl1 libegl-mesa0  # headless Workbench/EEVEE render through surfaceless EGL
   xvfb xauth          # the GUI test of Adjust Last Operation (xvfb-run)
   debootstrap         # scripts/blender_chroot.sh: Debian 13 and sid for Blender 4.3 and 5.2
