@@ -1,17 +1,20 @@
 #!/usr/bin/env python3
 """Builds the Stick Morph package for one Blender: a legacy add-on zip for
-Blender before 4.2, an extension zip for 4.2 and later.
+Blender before 4.2, an extension zip carrying the engine's wheel for 4.2 and
+later.
 
     python3 build_addon.py [--blender PATH] [--python PATH] [--build-dir DIR]
                            [--dist DIR] [--jobs N] [--install] [--print-path]
+    python3 build_addon.py --wheel WHEEL [--blender PATH] [--dist DIR]
 
 The native module is an ordinary CPython extension, so it loads only in a
 Blender whose embedded Python has the ABI it was compiled for (3.11, 3.13,
 ...), and only on a system with the C/C++ runtime it was linked against
-(docs/BLENDER.md). So each package is built for one Blender, and its name
-says for which:
+(docs/BLENDER.md). So each package is built for one Python ABI and platform,
+and its name says which:
 
-    dist/stick_morph-<version>-blender<M.m>-cp<XY>-<platform>.zip
+    dist/stick_morph-<version>-blender<M.m>-cp<XY>-<platform>.zip   Blender < 4.2
+    dist/stick_morph-<version>-cp<XY>-<platform>.zip                Blender >= 4.2
 
 Steps:
 1. Asks the Blender that will load the package for its version and the
@@ -25,15 +28,26 @@ Steps:
 3. Builds the pybind11 module with CMake (target stickmorph_python) in
    --build-dir (default build-addon/<blender>-<cpXY>/, one folder per ABI so
    that builds for several Blenders never share a CMake cache), and imports it
-   in that Blender once as a smoke test.
-4. Writes the package, with build_info.json (Python, module, Blender, build
-   system) next to the add-on's __init__.py:
-   - Blender < 4.2: a zip holding one folder stick_morph/ (Preferences >
-     Add-ons > Install).
-   - Blender >= 4.2: an extension zip, blender_manifest.toml at the archive
-     root, with blender_version_min/max set to the Blender series built for
-     (see extension_version_range), then checked with
-     `blender --command extension validate`.
+   in that Blender once as a smoke test. For an extension the module is built
+   as the engine's wheel, dist/stickmorph-<version>-cp<XY>-cp<XY>-<platform>.whl,
+   by the wheel backend (native/python/stickmorph_build_backend.py) run with
+   that interpreter.
+4. Writes the package, with build_info.json (Python, module or wheel,
+   Blender, build system) next to the add-on's __init__.py:
+   - Blender < 4.2: a zip holding one folder stick_morph/ with the module
+     inside (Preferences > Add-ons > Install).
+   - Blender >= 4.2: an extension zip, Blender's convention for native code:
+     blender_manifest.toml at the archive root lists the wheel under
+     ./wheels/ (`wheels = [...]`), which Blender installs into its own
+     site-packages when the extension is enabled; platforms names the wheel's
+     platform, and the Blender range is the add-on code's own
+     (blender_version_min 4.2.0, the first Blender with extensions). Which
+     Blenders can load it is said by the wheel's Python tag: Blender reads
+     it and refuses a wheel of another Python. The package is then checked
+     with `blender --command extension validate`.
+   --wheel WHEEL packages an already built wheel (a release build on another
+   platform, docs/RELEASE.md) without building or asking a Blender; with an
+   explicit --blender of 4.2 or later it is validated by that Blender too.
 5. --install: installs and enables the package in the user's own Blender:
    legacy add-ons with Preferences > Add-ons > Install (and the preferences
    saved), extensions with `blender --command extension install-file
@@ -58,6 +72,7 @@ ROOT = Path(__file__).resolve().parent
 PACKAGE = ROOT / "addon" / "stick_morph"
 MANIFEST = "blender_manifest.toml"
 BUILD_INFO = "build_info.json"
+BACKEND = ROOT / "native" / "python" / "stickmorph_build_backend.py"
 
 # The first Blender with the extension system (blender_manifest.toml,
 # `blender --command extension ...`). Earlier Blenders install legacy add-ons.
@@ -190,6 +205,8 @@ def choose_interpreter(blender: dict, override: str | None) -> str:
 
 
 def addon_version() -> str:
+    """The add-on's version: bl_info, the manifest template and the engine
+    (CMakeLists.txt's project(), the wheel's version) must all say the same."""
     text = (PACKAGE / "__init__.py").read_text()
     match = re.search(r'"version":\s*\((\d+),\s*(\d+),\s*(\d+)\)', text)
     if not match:
@@ -198,6 +215,10 @@ def addon_version() -> str:
     manifest = (PACKAGE / MANIFEST).read_text()
     if not re.search(rf'^version = "{re.escape(version)}"$', manifest, re.MULTILINE):
         fail(f"{MANIFEST}'s version differs from bl_info's {version}")
+    engine = re.search(r"project\(\s*stickmorph\s+VERSION\s+([0-9.]+)", (ROOT / "CMakeLists.txt").read_text())
+    if not engine or engine.group(1) != version:
+        fail(f"CMakeLists.txt's project version ({engine.group(1) if engine else 'none'}) differs from "
+             f"the add-on's {version}: the extension's wheel carries the engine's version")
     return version
 
 
@@ -217,6 +238,33 @@ def platform_tag(blender: dict) -> str:
 
 def series(blender: dict) -> str:
     return "{}.{}".format(*blender["version"][:2])
+
+
+# Wheels (PEP 427 names: name-version-python-abi-platform.whl).
+
+WHEEL_NAME = re.compile(r"^stickmorph-(?P<version>[^-]+)-(?P<python>cp(?P<major>\d)(?P<minor>\d+))-"
+                        r"(?P<abi>cp\d+[a-z]*)-(?P<platform>[A-Za-z0-9_]+)\.whl$")
+
+
+def parse_wheel_name(path: Path) -> dict:
+    match = WHEEL_NAME.match(path.name)
+    if not match:
+        fail(f"{path.name} is not a stickmorph wheel name (stickmorph-<version>-cp<XY>-cp<XY>-<platform>.whl)")
+    return match.groupdict()
+
+
+def blender_platform_of_wheel(platform_name: str) -> str:
+    """Blender's platform name for a wheel platform tag, the way Blender maps
+    them when it installs wheels: linux_x86_64 and manylinux_2_28_x86_64 ->
+    linux-x64, win_amd64 -> windows-x64, macosx_11_0_arm64 -> macos-arm64."""
+    system = ("linux" if "linux" in platform_name else "windows" if platform_name.startswith("win")
+              else "macos" if platform_name.startswith("macosx") else None)
+    machine = next((blender for wheel, blender in (("x86_64", "x64"), ("amd64", "x64"), ("aarch64", "arm64"),
+                                                   ("arm64", "arm64")) if platform_name.endswith(wheel)), None)
+    if system is None or machine is None:
+        fail(f"no Blender platform for the wheel platform {platform_name} "
+             "(known: linux/manylinux x86_64 and aarch64, win_amd64, win_arm64, macosx x86_64 and arm64)")
+    return f"{system}-{machine}"
 
 
 def build_module(python: str, build_dir: Path, jobs: int, ext_suffix: str) -> Path:
@@ -239,6 +287,29 @@ def build_module(python: str, build_dir: Path, jobs: int, ext_suffix: str) -> Pa
     return module
 
 
+def build_wheel(python: str, build_dir: Path, jobs: int, dist: Path) -> Path:
+    """The engine's wheel for `python`, by the wheel backend run with that
+    interpreter (it tags the wheel with the running Python's ABI)."""
+    out = subprocess.run([python, str(BACKEND), "--out", str(dist), "--build-dir", str(build_dir),
+                          "--jobs", str(jobs)], stdout=subprocess.PIPE, text=True)
+    sys.stdout.write(out.stdout)
+    match = re.search(r"^wrote (.*\.whl)$", out.stdout, re.MULTILINE)
+    if out.returncode != 0 or not match:
+        fail(f"building the wheel with {python} failed (exit {out.returncode})")
+    return Path(match.group(1))
+
+
+def module_of_wheel(wheel: Path, folder: Path) -> Path:
+    """Unpacks the wheel's extension module into folder."""
+    with zipfile.ZipFile(wheel) as archive:
+        names = [n for n in archive.namelist() if "/" not in n and n.startswith("stickmorph.")
+                 and n.endswith((".so", ".pyd"))]
+        if len(names) != 1:
+            fail(f"{wheel.name} holds {len(names)} stickmorph modules, expected one")
+        archive.extract(names[0], folder)
+    return folder / names[0]
+
+
 SMOKE = r"""
 import sys
 sys.path.insert(0, sys.argv[sys.argv.index("--") + 1])
@@ -253,16 +324,20 @@ print("STICKMORPH_SMOKE", stickmorph.__file__, flush=True)
 """
 
 
-def smoke_test(blender: str, module: Path):
-    """Imports the module in Blender once: a wrong ABI or a missing shared
-    library shows here, at build time, not when a user enables the add-on."""
+def smoke_test(blender: str, module: Path | None = None, wheel: Path | None = None):
+    """Imports the module (or the wheel's) in Blender once: a wrong ABI or a
+    missing shared library shows here, at build time, not when a user
+    enables the add-on."""
     with tempfile.TemporaryDirectory(prefix="stickmorph-smoke-") as tmp:
-        shutil.copy2(module, tmp)
+        if wheel is not None:
+            module = module_of_wheel(wheel, Path(tmp))
+        else:
+            shutil.copy2(module, tmp)
         out = subprocess.run([blender, "-b", "--factory-startup", "--python-exit-code", "1",
                               "--python-expr", SMOKE, "--", tmp], capture_output=True, text=True)
         if out.returncode != 0 or "STICKMORPH_SMOKE" not in out.stdout:
             fail(f"the built module does not import in {blender}:\n{out.stdout}\n{out.stderr}")
-    print(f"{module.name} imports in {blender}")
+    print(f"{(wheel or module).name} imports in {blender}")
 
 
 def os_release() -> str:
@@ -292,96 +367,128 @@ def compiler(build_dir: Path) -> str:
         return match.group(1)
 
 
-def build_info(blender: dict, module: Path, python: str, build_dir: Path) -> dict:
+def build_info(python_version: tuple, platform_name: str, module: str, built_on: str,
+               blender: str | None = None, wheel: str | None = None) -> dict:
     """What the add-on checks when it is enabled (the running Python must be
     this one) and what a bug report needs."""
-    major, minor = blender["python"][:2]
-    return {
+    major, minor = python_version[:2]
+    info = {
         "python": f"{major}.{minor}",
         "python_tag": f"cpython-{major}{minor}",
-        "module": module.name,
-        "blender": blender["version_string"].split()[0],
-        "platform": platform_tag(blender),
-        "built_on": f"{os_release()}, {compiler(build_dir)}, against {python}",
+        "module": module,
+        "platform": platform_name,
+        "built_on": built_on,
     }
+    if blender:
+        info["blender"] = blender
+    if wheel:
+        info["wheel"] = wheel
+    return info
 
 
-def extension_version_range(blender: dict) -> tuple[str, str]:
-    """blender_version_min and blender_version_max (exclusive) of the extension.
-
-    The module only imports in a Blender embedding the Python it was built
-    for. Blender keeps one Python through a minor series (x.y.*), and a
-    distro may embed any Python it likes, so without knowing better the
-    package claims exactly the series it was built for: x.y.0 up to, but
-    excluding, x.(y+1).0. A Debian rebuild of the same Blender against a newer
-    Python is caught at enable time by the add-on's build_info.json check."""
-    major, minor = blender["version"][:2]
-    return f"{major}.{minor}.0", f"{major}.{minor + 1}.0"
+# blender_version_min of the extension: the add-on's code runs in every
+# Blender with the extension system (4.2 on). There is no maximum: which
+# Blenders load the package is decided by its wheel's Python tag, which
+# Blender reads (blender.org's 4.2-5.0 embed Python 3.11, 5.1 on 3.13;
+# Debian's 4.3 and 5.2 the system's 3.13 and 3.14), not by a version range.
+EXTENSION_BLENDER_MIN = "4.2.0"
 
 
-def manifest_text(blender: dict) -> str:
-    """The repository's manifest with this build's version range and platform,
-    and without the [build] table (it only steers `extension build`)."""
+def manifest_text(python_version: tuple, platform_name: str, wheel: Path, built_for: str) -> str:
+    """The repository's manifest with this package's wheel and platform, and
+    without the [build] table (it only steers `extension build`)."""
     template = re.split(r"^\[build\]\s*$", (PACKAGE / MANIFEST).read_text(), maxsplit=1, flags=re.MULTILINE)[0]
     # The template's comments are about the template; the package's manifest
     # says what it was written for instead.
     lines = [line for line in template.splitlines() if not line.startswith("#")]
     text = re.sub(r"\n{3,}", "\n\n", "\n".join(lines)).strip() + "\n"
-    text = (f"# Written by build_addon.py for Blender {blender['version_string'].split()[0]} "
-            f"(Python {blender['python'][0]}.{blender['python'][1]}); the bundled module\n"
-            f"# imports only in a Blender embedding that Python (docs/BLENDER.md).\n" + text)
-    low, high = extension_version_range(blender)
-    text, count = re.subn(r'^blender_version_min = ".*"$',
-                          f'blender_version_min = "{low}"\nblender_version_max = "{high}"', text,
-                          flags=re.MULTILINE)
+    text = (f"# Written by build_addon.py for Python {python_version[0]}.{python_version[1]} on "
+            f"{platform_name} ({built_for}):\n# the engine is the wheel below; Blender installs it only "
+            f"when it embeds that Python (docs/BLENDER.md).\n" + text)
+    text, count = re.subn(r'^blender_version_min = ".*"$', f'blender_version_min = "{EXTENSION_BLENDER_MIN}"',
+                          text, flags=re.MULTILINE)
     if count != 1:
         fail(f"no blender_version_min line in {PACKAGE / MANIFEST}")
-    text, count = re.subn(r"^platforms = \[.*\]$", f'platforms = ["{platform_tag(blender)}"]', text,
-                          flags=re.MULTILINE)
+    text, count = re.subn(r"^platforms = \[.*\]$", f'platforms = ["{platform_name}"]\n'
+                          f'wheels = ["./wheels/{wheel.name}"]', text, flags=re.MULTILINE)
     if count != 1:
         fail(f"no platforms line in {PACKAGE / MANIFEST}")
-    try:
-        import tomllib  # Python 3.11+
-        parsed = tomllib.loads(text)
-        assert parsed["blender_version_min"] == low and parsed["blender_version_max"] == high
-    except ImportError:
-        pass
+    import tomllib  # Python 3.11+, like every interpreter this script supports
+    parsed = tomllib.loads(text)
+    assert parsed["blender_version_min"] == EXTENSION_BLENDER_MIN and "blender_version_max" not in parsed
+    assert parsed["wheels"] == [f"./wheels/{wheel.name}"] and parsed["platforms"] == [platform_name]
     return text
 
 
 def package_files():
     for file in sorted(PACKAGE.rglob("*")):
-        if file.is_dir() or "__pycache__" in file.parts or file.suffix in (".pyc", ".so"):
+        if file.is_dir() or "__pycache__" in file.parts or file.suffix in (".pyc", ".so", ".whl"):
             continue
         if file.name in (MANIFEST, BUILD_INFO):
             continue  # written per build
         yield file, file.relative_to(PACKAGE)
 
 
-def package_path(blender: dict, version: str, dist: Path) -> Path:
+def legacy_package_path(blender: dict, version: str, dist: Path) -> Path:
     return dist / f"stick_morph-{version}-blender{series(blender)}-{python_tag(blender)}-{platform_tag(blender)}.zip"
 
 
-def write_package(blender: dict, module: Path, info: dict, version: str, dist: Path) -> Path:
-    extension = blender["version"] >= EXTENSIONS_SINCE
-    dist.mkdir(parents=True, exist_ok=True)
-    path = package_path(blender, version, dist)
-    # Blender's extension format wants the manifest at the archive root (as
-    # `blender --command extension build` writes it); a legacy add-on zip
-    # holds the package folder.
-    prefix = Path() if extension else Path("stick_morph")
+def extension_package_path(python: str, platform_name: str, version: str, dist: Path) -> Path:
+    """One extension per Python ABI and platform: cp311 serves every
+    blender.org Blender 4.2-5.0 on that platform, cp313 5.1 on."""
+    return dist / f"stick_morph-{version}-{python}-{platform_name}.zip"
+
+
+def package_path(blender: dict, version: str, dist: Path) -> Path:
+    if blender["version"] >= EXTENSIONS_SINCE:
+        return extension_package_path(python_tag(blender), platform_tag(blender), version, dist)
+    return legacy_package_path(blender, version, dist)
+
+
+def _shown(path: Path):
+    return path.relative_to(ROOT) if inside(str(path), str(ROOT)) else path
+
+
+def _write_zip(path: Path, prefix: Path, extra: dict[str, bytes | Path]):
     tmp = path.with_name(path.name + ".tmp")
     with zipfile.ZipFile(tmp, "w", zipfile.ZIP_DEFLATED) as archive:
         for file, relative in package_files():
             archive.write(file, str(prefix / relative))
-        archive.write(module, str(prefix / module.name))
-        archive.writestr(str(prefix / BUILD_INFO), json.dumps(info, indent=2) + "\n")
-        if extension:
-            archive.writestr(MANIFEST, manifest_text(blender))
+        for name, content in extra.items():
+            if isinstance(content, Path):
+                archive.write(content, name)
+            else:
+                archive.writestr(name, content)
     os.replace(tmp, path)
-    kind = "extension" if extension else "legacy add-on"
-    shown = path.relative_to(ROOT) if inside(str(path), str(ROOT)) else path
-    print(f"wrote {shown} ({kind} for Blender {series(blender)}, Python {info['python']})")
+
+
+def write_legacy_package(blender: dict, module: Path, info: dict, version: str, dist: Path) -> Path:
+    """A zip holding the folder stick_morph/ with the module inside."""
+    dist.mkdir(parents=True, exist_ok=True)
+    path = legacy_package_path(blender, version, dist)
+    prefix = Path("stick_morph")
+    _write_zip(path, prefix, {str(prefix / module.name): module,
+                              str(prefix / BUILD_INFO): json.dumps(info, indent=2) + "\n"})
+    print(f"wrote {_shown(path)} (legacy add-on for Blender {series(blender)}, Python {info['python']})")
+    return path
+
+
+def write_extension_package(wheel: Path, info: dict, version: str, dist: Path) -> Path:
+    """An extension zip: the manifest at the archive root (as `blender
+    --command extension build` writes it), the add-on beside it, the wheel
+    under wheels/."""
+    fields = parse_wheel_name(wheel)
+    if fields["version"] != version:
+        fail(f"{wheel.name} is version {fields['version']}, the add-on {version}")
+    python_version = (int(fields["major"]), int(fields["minor"]))
+    platform_name = blender_platform_of_wheel(fields["platform"])
+    dist.mkdir(parents=True, exist_ok=True)
+    path = extension_package_path(fields["python"], platform_name, version, dist)
+    manifest = manifest_text(python_version, platform_name, wheel, info["built_on"])
+    _write_zip(path, Path(), {f"wheels/{wheel.name}": wheel, BUILD_INFO: json.dumps(info, indent=2) + "\n",
+                              MANIFEST: manifest})
+    print(f"wrote {_shown(path)} (extension for Blender {EXTENSION_BLENDER_MIN[:3]}+ embedding Python "
+          f"{info['python']}, {platform_name}, with {wheel.name})")
     return path
 
 
@@ -411,7 +518,7 @@ def install(blender_path: str, blender: dict, archive: Path):
     """Installs and enables the package in the user's own Blender."""
     if blender["version"] >= EXTENSIONS_SINCE:
         # Blender's own installer: unpacks into the user_default repository,
-        # enables the extension and saves the preferences.
+        # installs the wheel, enables the extension and saves the preferences.
         run([blender_path, "--command", "extension", "install-file", "-r", "user_default", "--enable",
              str(archive)])
         print("installed and enabled as the extension bl_ext.user_default.stick_morph")
@@ -426,11 +533,30 @@ def install(blender_path: str, blender: dict, archive: Path):
     fail(f"installing failed:\n{out.stdout}\n{out.stderr}")
 
 
+def package_given_wheel(args, version: str) -> int:
+    """--wheel: an extension around an already built wheel, no build."""
+    wheel = Path(args.wheel).resolve()
+    if not wheel.is_file():
+        fail(f"no wheel at {args.wheel}")
+    fields = parse_wheel_name(wheel)
+    info = build_info((int(fields["major"]), int(fields["minor"])), blender_platform_of_wheel(fields["platform"]),
+                      module=f"stickmorph ({fields['python']}, in {wheel.name})",
+                      built_on=f"the wheel {wheel.name}", wheel=wheel.name)
+    archive = write_extension_package(wheel, info, version, Path(args.dist).resolve())
+    if args.blender_given:
+        blender = blender_info(args.blender)
+        if blender["version"] < EXTENSIONS_SINCE:
+            fail(f"Blender {blender['version_string']} has no extensions; it cannot validate {archive.name}")
+        validate_extension(args.blender, archive)
+    return 0
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--blender", default=shutil.which("blender") or "blender",
-                        help="the Blender that will load the package (default: blender on PATH)")
+    parser.add_argument("--blender", help="the Blender that will load the package (default: blender on PATH)")
     parser.add_argument("--python", help="build against this interpreter (default: found from Blender)")
+    parser.add_argument("--wheel", help="package this already built engine wheel as an extension "
+                                        "(nothing is built; --blender, if given, validates it)")
     parser.add_argument("--build-dir", help="CMake build directory for the module "
                                             "(default: build-addon/blender<M.m>-cp<XY>/)")
     parser.add_argument("--dist", default=str(ROOT / "dist"), help="where to write the package (default: dist/)")
@@ -440,8 +566,14 @@ def main(argv=None):
     parser.add_argument("--print-path", action="store_true",
                         help="only print the path of the package for this Blender (nothing is built)")
     args = parser.parse_args(argv)
+    args.blender_given = args.blender is not None
+    args.blender = args.blender or shutil.which("blender") or "blender"
 
     version = addon_version()
+    if args.wheel:
+        if args.install or args.print_path or args.python:
+            fail("--wheel only packages (and validates) a wheel: no --install, --print-path or --python")
+        return package_given_wheel(args, version)
     blender = blender_info(args.blender)
     if args.print_path:
         print(package_path(blender, version, Path(args.dist).resolve()))
@@ -458,12 +590,24 @@ def main(argv=None):
               f"{blender['prefix']}); the add-on needs it: install python3-numpy, or run Blender "
               f"without another Python first on PATH", flush=True)
     build_dir = Path(args.build_dir or ROOT / "build-addon" / f"blender{series(blender)}-{python_tag(blender)}")
-    module = build_module(python, build_dir.resolve(), args.jobs, blender["ext_suffix"])
-    smoke_test(args.blender, module)
-    info = build_info(blender, module, python, build_dir.resolve())
-    archive = write_package(blender, module, info, version, Path(args.dist).resolve())
+    build_dir = build_dir.resolve()
+    dist = Path(args.dist).resolve()
+    blender_version = blender["version_string"].split()[0]
     if blender["version"] >= EXTENSIONS_SINCE:
+        wheel = build_wheel(python, build_dir, args.jobs, dist)
+        smoke_test(args.blender, wheel=wheel)
+        info = build_info(blender["python"], platform_tag(blender), module=f"stickmorph{blender['ext_suffix']}",
+                          built_on=f"{os_release()}, {compiler(build_dir)}, against {python}",
+                          blender=blender_version, wheel=wheel.name)
+        archive = write_extension_package(wheel, info, version, dist)
         validate_extension(args.blender, archive)
+    else:
+        module = build_module(python, build_dir, args.jobs, blender["ext_suffix"])
+        smoke_test(args.blender, module=module)
+        info = build_info(blender["python"], platform_tag(blender), module=module.name,
+                          built_on=f"{os_release()}, {compiler(build_dir)}, against {python}",
+                          blender=blender_version)
+        archive = write_legacy_package(blender, module, info, version, dist)
     if args.install:
         install(args.blender, blender, archive)
     return 0

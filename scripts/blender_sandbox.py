@@ -116,20 +116,29 @@ def check_sandboxed():
 
 
 def package_pattern():
-    """The glob of build_addon.py's package name for this Blender and Python."""
+    """The glob of build_addon.py's package name for this Blender and Python:
+    an extension per Python ABI and platform from 4.2, a legacy zip per
+    Blender series before."""
     import platform
     import bpy
     machine = {"x86_64": "x64", "amd64": "x64", "aarch64": "arm64"}.get(platform.machine().lower(),
                                                                        platform.machine().lower())
-    return (f"stick_morph-*-blender{bpy.app.version[0]}.{bpy.app.version[1]}-"
-            f"cp{sys.version_info[0]}{sys.version_info[1]}-linux-{machine}.zip")
+    python = f"cp{sys.version_info[0]}{sys.version_info[1]}"
+    if uses_extensions():
+        return f"stick_morph-*-{python}-linux-{machine}.zip"
+    return f"stick_morph-*-blender{bpy.app.version[0]}.{bpy.app.version[1]}-{python}-linux-{machine}.zip"
 
 
 def find_package(dist):
-    """The newest package in `dist` built for this Blender (by version series
-    and Python). Raises FileNotFoundError naming what was looked for."""
+    """The newest package in `dist` built for this Blender (by Python and,
+    for a legacy add-on, version series). Raises FileNotFoundError naming
+    what was looked for."""
     pattern = package_pattern()
-    found = sorted(glob.glob(os.path.join(dist, pattern)), key=os.path.getmtime)
+    found = glob.glob(os.path.join(dist, pattern))
+    if uses_extensions():
+        # The extension glob also matches legacy names (...-blender3.4-cp311-...).
+        found = [path for path in found if "-blender" not in os.path.basename(path)]
+    found.sort(key=os.path.getmtime)
     if not found:
         import bpy
         raise FileNotFoundError(f"no {pattern} in {dist}: build it first with "
@@ -143,11 +152,47 @@ def _is_extension_package(path):
         return "blender_manifest.toml" in archive.namelist()
 
 
+def _install_extension_file(path, name):
+    """`blender --command extension install-file -r user_default --enable`,
+    the command line a farm or a script installs an extension with (issue
+    33), run in this sandbox; then this Blender, started before the
+    install, reads the repository again, installs the package's wheels into
+    its site-packages (extensions/.local) and enables the add-on."""
+    import addon_utils
+    import bpy
+    command = [bpy.app.binary_path, "--command", "extension", "install-file", "-r", USER_REPOSITORY,
+               "--enable", path]
+    out = subprocess.run(command, capture_output=True, text=True)
+    if out.returncode != 0:
+        raise RuntimeError(f"`{' '.join(command)}` failed (exit {out.returncode}):\n{out.stdout}\n{out.stderr}")
+    addon_utils.modules_refresh()
+    addon_utils.extensions_refresh(ensure_wheels=True, addon_modules_pending=[name])
+    # The wheel is already installed (by the command above), so the refresh
+    # has nothing to sync and does not put the extensions' site-packages on
+    # sys.path: Blender does that at startup, which a farm's next `blender`
+    # command goes through. This Blender started before the folder existed,
+    # so it takes that startup step now, with Blender's own function.
+    add_site_packages = getattr(addon_utils, "_initialize_extensions_site_packages", None)
+    if add_site_packages is None:
+        raise RuntimeError(f"Blender {bpy.app.version_string} has no addon_utils._initialize_extensions_site_packages; "
+                           "the sandbox cannot make the installed wheel importable without a restart")
+    add_site_packages(extensions_directory=bpy.utils.user_resource("EXTENSIONS"))
+    return bpy.ops.preferences.addon_enable(module=name)
+
+
+def engine_module_file():
+    """Where `import stickmorph` finds the engine (an extension's wheel
+    installs it into the sandbox's extensions/.local site-packages)."""
+    import importlib
+    return importlib.import_module("stickmorph").__file__
+
+
 def install_package(path):
     """Installs the package at `path` into the sandbox and enables it, the way
     this Blender installs such a package (legacy add-on: Preferences > Add-ons
-    > Install; 4.2+: Get Extensions > Install from Disk into the user_default
-    repository). Returns the add-on's module name. Raises RuntimeError."""
+    > Install; 4.2+: `blender --command extension install-file` into the
+    user_default repository, which installs the engine's wheel). Returns the
+    add-on's module name. Raises RuntimeError."""
     import importlib
     import bpy
     sandbox = check_sandboxed()
@@ -157,8 +202,7 @@ def install_package(path):
         if not _is_extension_package(path):
             raise RuntimeError(f"{path} is a legacy add-on zip; Blender {bpy.app.version_string} "
                                "needs the extension package (build_addon.py --blender this Blender)")
-        result = bpy.ops.extensions.package_install_files(
-            filepath=path, repo=USER_REPOSITORY, enable_on_install=True, overwrite=True)
+        result = _install_extension_file(path, name)
     else:
         if _is_extension_package(path):
             raise RuntimeError(f"{path} is an extension; Blender {bpy.app.version_string} installs "
@@ -174,6 +218,20 @@ def install_package(path):
     module = importlib.import_module(name)
     if not _inside(module.__file__, sandbox):
         raise RuntimeError(f"{name} was loaded from {module.__file__}, not from the sandbox {sandbox}")
+    if uses_extensions():
+        # The engine must be the wheel the package carries, installed by
+        # Blender into the sandbox, not a module from a build tree.
+        local = os.path.join(sandbox, "extensions", ".local")
+        installed = glob.glob(os.path.join(local, "lib", "python*", "site-packages", "stickmorph.*"))
+        if not installed:
+            raise RuntimeError(f"installing {path} put no stickmorph module into {local}: the wheel was not installed")
+        try:
+            engine = engine_module_file()
+        except (ImportError, OSError):
+            engine = None  # the add-on reports a module that does not load (tests/blender/test_dependencies.py)
+        if engine is not None and not _inside(engine, local):
+            raise RuntimeError(f"stickmorph was loaded from {engine}, not from the wheel Blender installed "
+                               f"into {os.path.join(sandbox, 'extensions', '.local')}")
     return name
 
 

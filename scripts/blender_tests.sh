@@ -6,8 +6,10 @@
 #
 # 1. /usr/bin/python3 build_addon.py: builds the native module for Blender's
 #    Python (in $STICKMORPH_BUILD_DIR, default build-addon/) and writes
-#    dist/stick_morph-<version>-blender<M.m>-cp<XY>-linux-x64.zip (a legacy
-#    add-on before Blender 4.2, an extension from 4.2; docs/BLENDER.md).
+#    its package (docs/BLENDER.md): dist/stick_morph-<version>-blender<M.m>-
+#    cp<XY>-linux-x64.zip (a legacy add-on) before Blender 4.2; from 4.2 the
+#    engine's wheel and dist/stick_morph-<version>-cp<XY>-linux-x64.zip, an
+#    extension carrying it.
 # 2. tests/blender/run_pytest.py in `blender -b --factory-startup`: installs
 #    and enables that package in a temporary user config, bakes, checks, renders.
 # Exits non-zero if the build or any test fails; pytest prints its summary line.

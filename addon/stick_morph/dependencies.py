@@ -23,7 +23,7 @@ import sys
 from dataclasses import dataclass, field
 
 BUILD_INFO = "build_info.json"
-BUILD_INFO_KEYS = ("python", "python_tag", "module", "built_on")
+BUILD_INFO_KEYS = ("python", "python_tag", "module", "built_on", "wheel", "platform")
 UNKNOWN = "unknown"
 BUILD_COMMAND = "python3 build_addon.py --blender {blender}"
 
@@ -53,12 +53,20 @@ def read_build_info(package_dir: str) -> dict:
 
 
 def module_files(package_dir: str) -> list[str]:
-    """The native module files in the package (whatever Python they are for)."""
+    """The native module files in the package (whatever Python they are for):
+    a loose module in a legacy add-on, wheels/stickmorph-*.whl in an
+    extension (Blender installs the wheel into its own site-packages)."""
     try:
         names = os.listdir(package_dir)
     except OSError:
         return []
-    return sorted(n for n in names if n.startswith("stickmorph") and n.endswith((".so", ".pyd")))
+    found = sorted(n for n in names if n.startswith("stickmorph") and n.endswith((".so", ".pyd")))
+    try:
+        wheels = os.listdir(os.path.join(package_dir, "wheels"))
+    except OSError:
+        wheels = []
+    found += sorted(f"wheels/{n}" for n in wheels if n.startswith("stickmorph-") and n.endswith(".whl"))
+    return found
 
 
 def _error_text(error: BaseException) -> str:
@@ -75,8 +83,11 @@ def import_engine(package: str | None):
         except (ImportError, OSError) as inside:
             try:
                 return importlib.import_module("stickmorph")
-            except (ImportError, OSError):
-                raise inside from None
+            except (ImportError, OSError) as outside:
+                # An extension holds no module of its own (its wheel installs
+                # a top-level one): then the top-level error is the one to show.
+                absent = isinstance(inside, ModuleNotFoundError) and inside.name == f"{package}.stickmorph"
+                raise (outside if absent else inside) from None
     return importlib.import_module("stickmorph")
 
 
@@ -114,6 +125,21 @@ class Dependencies:
             text += f", on {info['built_on']}"
         return text
 
+    @property
+    def wheel(self) -> str:
+        """The wheel an extension carries (build_info.json), or "unknown"."""
+        return self.build_info.get("wheel", UNKNOWN)
+
+    def extension_for_this_python(self) -> str:
+        """The extension file name for the running Python (docs/BLENDER.md:
+        one extension per Python ABI and platform)."""
+        tag = "cp" + self.python.replace(".", "")
+        wheel = self.wheel
+        version = wheel.split("-")[1] if wheel.count("-") >= 4 else "<version>"
+        platform = self.build_info.get("platform", UNKNOWN)
+        platform = platform if platform != UNKNOWN else "<platform>"
+        return f"stick_morph-{version}-{tag}-{platform}.zip"
+
     def rebuild_command(self) -> str:
         return BUILD_COMMAND.format(blender=self.blender or "/path/to/blender")
 
@@ -130,8 +156,12 @@ class Dependencies:
             if module == UNKNOWN and self.module_files:
                 module = ", ".join(self.module_files)
             lines.append(f"Module: {module if module != UNKNOWN else 'none found in the add-on'}")
+            if self.wheel != UNKNOWN:
+                lines.append(f"Wheel: {self.wheel}")
             lines.append(f"Built for: {self.built_for()}")
             lines.append(f"This Blender: Python {self.python} ({self.python_tag})")
+            if self.wheel != UNKNOWN:
+                lines.append(f"Install the extension for Python {self.python}: {self.extension_for_this_python()}")
             lines.append("Rebuild the add-on for this Blender:")
             lines.append(self.rebuild_command())
         return lines
@@ -151,8 +181,11 @@ class Dependencies:
             parts.append(f"the add-on holds {found}"
                          + (f" (build_info.json: {module})" if module != UNKNOWN and module not in found else "")
                          + f", built for {self.built_for()}; this Blender has Python {self.python} "
-                         f"({self.python_tag}) ({self.engine_error}). Rebuild the add-on for this "
-                         f"Blender: {self.rebuild_command()}")
+                         f"({self.python_tag}) ({self.engine_error}). "
+                         + (f"Install the extension for Python {self.python} "
+                            f"({self.extension_for_this_python()}), or rebuild"
+                            if self.wheel != UNKNOWN else "Rebuild")
+                         + f" the add-on for this Blender: {self.rebuild_command()}")
         return "; ".join(parts)
 
 

@@ -154,8 +154,8 @@ def runtime_libraries(module: Path) -> list[str]:
     """The shared libraries the module needs from the system, as
     Requires-External entries: on Linux the DT_NEEDED entries (readelf -d)
     with the newest glibc and libstdc++ symbol versions used (readelf -V),
-    on macOS otool -L. Empty where neither tool runs (Windows: the DLLs a
-    wheel needs are vendored by delvewheel in the release workflow)."""
+    on macOS otool -L. Empty on Windows, where the release workflow links
+    GMP statically (vcpkg's x64-windows-static-md triplet, docs/RELEASE.md)."""
     if sys.platform.startswith("linux"):
         dynamic = _tool_output(["readelf", "-d", "-W", str(module)])
         if dynamic is None:

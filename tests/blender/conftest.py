@@ -74,12 +74,19 @@ def addon():
         pytest.fail(str(error))
     assert name == ADDON_MODULE
     package = addon_import()
-    # Loaded from the installed copy, with its bundled native module.
+    # Loaded from the installed copy, with its bundled native module: inside
+    # the legacy add-on's folder, or (an extension) from the wheel Blender
+    # installed into the extensions' site-packages.
     assert os.path.realpath(package.__file__).startswith(os.path.realpath(SANDBOX))
     core = addon_import("core")
     engine = core.load_engine()
     assert os.path.realpath(engine.__file__).startswith(os.path.realpath(SANDBOX)), engine.__file__
-    assert os.path.dirname(os.path.realpath(engine.__file__)) == os.path.dirname(os.path.realpath(package.__file__))
+    if blender_sandbox.uses_extensions():
+        site_packages = os.path.join(bpy.utils.user_resource("EXTENSIONS"), ".local", "lib",
+                                     f"python{sys.version_info[0]}.{sys.version_info[1]}", "site-packages")
+        assert os.path.dirname(os.path.realpath(engine.__file__)) == os.path.realpath(site_packages), engine.__file__
+    else:
+        assert os.path.dirname(os.path.realpath(engine.__file__)) == os.path.dirname(os.path.realpath(package.__file__))
     assert hasattr(bpy.types, "OBJECT_OT_stick_morph_bake") or hasattr(bpy.ops.object, "stick_morph_bake")
     return package
 

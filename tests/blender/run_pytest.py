@@ -3,9 +3,10 @@
     blender -b --factory-startup --python-exit-code 1 --python tests/blender/run_pytest.py -- [pytest args]
 
 The tests install the package built for this Blender (the newest
-dist/stick_morph-*-blender<M.m>-cp<XY>-*.zip, or $STICKMORPH_ADDON_ZIP): a
-legacy add-on on Blender < 4.2, an extension in the user_default repository on
-4.2+. So that the real user configuration is never touched, this script first
+dist/stick_morph-*-blender<M.m>-cp<XY>-*.zip on Blender < 4.2, a legacy
+add-on; dist/stick_morph-*-cp<XY>-*.zip on 4.2+, an extension with the
+engine's wheel, installed into the user_default repository with `blender
+--command extension install-file`; or $STICKMORPH_ADDON_ZIP). So that the real user configuration is never touched, this script first
 re-launches Blender with every user folder (config, scripts, datafiles,
 extensions) in a temporary folder (scripts/blender_sandbox.py), and runs
 pytest there; conftest.py checks that Blender really uses those folders.

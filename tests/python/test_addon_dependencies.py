@@ -106,3 +106,26 @@ def test_numpy_missing_is_reported(tmp_path):
     assert not without["ok"] and "numpy" in without["missing"]
     assert without["numpy_error"].startswith(("ImportError", "ModuleNotFoundError"))
     assert "numpy does not import" in without["message"] and "python3-numpy" in without["message"]
+
+
+def test_an_extension_names_its_wheel_and_the_extension_for_this_python(tmp_path):
+    """An extension carries the engine as wheels/stickmorph-*.whl (issue 33):
+    when it does not load, the message names the wheel, the Python it is for
+    and the extension file for the running Python."""
+    info = {"python": "3.9", "python_tag": "cpython-39", "module": "stickmorph.cpython-39-x86_64-linux-gnu.so",
+            "built_on": "Debian 11, GCC 10", "wheel": "stickmorph-0.1.0-cp39-cp39-linux_x86_64.whl",
+            "platform": "linux-x64"}
+    package = make_package(tmp_path, build_info=info)
+    (package / "wheels").mkdir()
+    (package / "wheels" / info["wheel"]).write_bytes(b"")
+    status = run_check(package)
+    this = f"{sys.version_info[0]}.{sys.version_info[1]}"
+    tag = f"cp{sys.version_info[0]}{sys.version_info[1]}"
+    assert not status["ok"]
+    lines = status["lines"]
+    assert f"Module: {info['module']}" in lines and f"Wheel: {info['wheel']}" in lines
+    assert f"Install the extension for Python {this}: stick_morph-0.1.0-{tag}-linux-x64.zip" in lines
+    message = status["message"]
+    for fragment in (f"the add-on holds wheels/{info['wheel']}", "built for Python 3.9 (cpython-39)",
+                     f"Install the extension for Python {this} (stick_morph-0.1.0-{tag}-linux-x64.zip)"):
+        assert fragment in message, (fragment, message)
