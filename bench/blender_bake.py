@@ -122,8 +122,15 @@ def find_package(blender, dist):
                              capture_output=True, text=True, check=True).stdout
     line = next(x for x in version.splitlines() if x.startswith("VERSION "))
     major, minor, py_major, py_minor = (int(v) for v in line.split()[1:])
-    pattern = f"stick_morph-*-blender{major}.{minor}-cp{py_major}{py_minor}-*.zip"
-    found = sorted(pathlib.Path(dist).glob(pattern), key=os.path.getmtime)
+    # build_addon.py's names: a legacy zip per Blender series before 4.2, an
+    # extension per Python ABI from 4.2 (whose glob also matches legacy names).
+    if (major, minor) >= blender_sandbox.EXTENSIONS_SINCE[:2]:
+        pattern = f"stick_morph-*-cp{py_major}{py_minor}-*.zip"
+        found = [p for p in pathlib.Path(dist).glob(pattern) if "-blender" not in p.name]
+    else:
+        pattern = f"stick_morph-*-blender{major}.{minor}-cp{py_major}{py_minor}-*.zip"
+        found = list(pathlib.Path(dist).glob(pattern))
+    found.sort(key=os.path.getmtime)
     if not found:
         raise SystemExit(f"blender_bake.py: no package {pattern} in {dist} (run build_addon.py first)")
     return str(found[-1]), blender_sandbox

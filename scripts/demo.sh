@@ -6,7 +6,7 @@
 # the paper's S into U (Figure 8c) and writes, to out/: the morph (FORMAT.md
 # JSON), its filmstrip, the straight-line morph's filmstrip (Figure 8d, which
 # self-intersects) and the compatible triangulation drawn side by side.
-# Then it builds the Blender add-on zip (dist/stick_morph-<version>.zip),
+# Then it builds the Blender add-on zip (dist/stick_morph-<version>-blender3.4-cp311-linux-x64.zip),
 # bakes the monkey -> basketball player sample (Figure 8a) with it in headless
 # Blender (scripts/render_demo.py: a temporary user config, never the real
 # one) and renders PNG frames and an MP4 into out/monkey_to_player/, next to a
