@@ -267,36 +267,31 @@ def blender_platform_of_wheel(platform_name: str) -> str:
     return f"{system}-{machine}"
 
 
-def build_module(python: str, build_dir: Path, jobs: int, ext_suffix: str) -> Path:
-    # Only the module is needed. In a build folder of its own the tests are
-    # switched off; a shared one (scripts/test.sh passes build/) keeps the
-    # settings it has, so its Catch2 tests still build afterwards.
-    configure = ["cmake", "-S", str(ROOT), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release",
-                 f"-DPython3_EXECUTABLE={python}"]
-    if not (build_dir / "CMakeCache.txt").exists():
-        configure.append("-DSTICKMORPH_BUILD_TESTS=OFF")
-    run(configure)
-    run(["cmake", "--build", str(build_dir), f"-j{jobs}", "--target", "stickmorph_python"])
-    # A shared build folder may still hold a module of another Python: take
-    # the one with this Python's suffix, and make sure it was just built.
-    module = build_dir / "python" / f"stickmorph{ext_suffix}"
-    if not module.is_file():
-        found = sorted(p.name for p in (build_dir / "python").glob("stickmorph*"))
-        fail(f"the build wrote no {module.name} to {module.parent} (found {found}); "
-             f"did CMake pick another Python than {python}?")
-    return module
+def _run_backend(python: str, arguments: list[str], pattern: str) -> Path:
+    """Runs the wheel backend (native/python/stickmorph_build_backend.py, the
+    one place the CMake build of the module is driven) with `python`, so that
+    it builds for that interpreter; returns the path its last line names."""
+    out = subprocess.run([python, str(BACKEND), *arguments], stdout=subprocess.PIPE, text=True)
+    sys.stdout.write(out.stdout)
+    match = re.search(pattern, out.stdout, re.MULTILINE)
+    if out.returncode != 0 or not match:
+        fail(f"building the module with {python} failed (exit {out.returncode})")
+    return Path(match.group(1))
+
+
+def build_module(python: str, build_dir: Path, jobs: int) -> Path:
+    """The module alone (a legacy add-on bundles it loose). In a build folder
+    of its own the tests are switched off; a shared one (scripts/test.sh
+    passes build/) keeps the settings it has, so its Catch2 tests still
+    build afterwards. The backend checks the module has this Python's suffix."""
+    return _run_backend(python, ["--module-only", "--build-dir", str(build_dir), "--jobs", str(jobs)],
+                        r"^built (.*)$")
 
 
 def build_wheel(python: str, build_dir: Path, jobs: int, dist: Path) -> Path:
-    """The engine's wheel for `python`, by the wheel backend run with that
-    interpreter (it tags the wheel with the running Python's ABI)."""
-    out = subprocess.run([python, str(BACKEND), "--out", str(dist), "--build-dir", str(build_dir),
-                          "--jobs", str(jobs)], stdout=subprocess.PIPE, text=True)
-    sys.stdout.write(out.stdout)
-    match = re.search(r"^wrote (.*\.whl)$", out.stdout, re.MULTILINE)
-    if out.returncode != 0 or not match:
-        fail(f"building the wheel with {python} failed (exit {out.returncode})")
-    return Path(match.group(1))
+    """The engine's wheel for `python` (tagged with that Python's ABI)."""
+    return _run_backend(python, ["--out", str(dist), "--build-dir", str(build_dir), "--jobs", str(jobs)],
+                        r"^wrote (.*\.whl)$")
 
 
 def module_of_wheel(wheel: Path, folder: Path) -> Path:
@@ -602,7 +597,7 @@ def main(argv=None):
         archive = write_extension_package(wheel, info, version, dist)
         validate_extension(args.blender, archive)
     else:
-        module = build_module(python, build_dir, args.jobs, blender["ext_suffix"])
+        module = build_module(python, build_dir, args.jobs)
         smoke_test(args.blender, module=module)
         info = build_info(blender["python"], platform_tag(blender), module=module.name,
                           built_on=f"{os_release()}, {compiler(build_dir)}, against {python}",

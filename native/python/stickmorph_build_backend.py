@@ -302,12 +302,17 @@ def main(argv=None) -> int:
     parser.add_argument("--build-dir", help="CMake build folder (default build-wheel/<abi>-<platform>/)")
     parser.add_argument("--jobs", type=int, default=2, help="parallel build jobs (default 2)")
     parser.add_argument("--print-name", action="store_true", help="only print the wheel's file name")
+    parser.add_argument("--module-only", action="store_true",
+                        help="only build the module and print its path (build_addon.py's legacy add-on zip)")
     args = parser.parse_args(argv)
     try:
         if args.print_name:
             print(wheel_name())
             return 0
         build_dir = Path(args.build_dir).resolve() if args.build_dir else default_build_dir()
+        if args.module_only:
+            print(f"built {build_module(build_dir, args.jobs)}")
+            return 0
         path = build(Path(args.out).resolve(), build_dir, args.jobs)
     except BuildError as error:
         print(f"error: {error}", file=sys.stderr)

@@ -187,43 +187,33 @@ def runtime_constants():
 Param = collections.namedtuple("Param", "name kind default")
 
 
-def _split_top_level(text, separator):
-    """text split at `separator` outside brackets and quotes (a default's
-    repr may hold commas: "= (1, 2)", "= 'a, b'")."""
-    parts, depth, quote, start = [], 0, None, 0
+def _top_level(text):
+    """(index, char, depth) of every character of text outside quotes, the
+    depth of brackets before it (a default's repr may hold commas and
+    brackets: "= (1, 2)", "= 'a, b'")."""
+    depth, quote = 0, None
     for i, char in enumerate(text):
         if quote:
             if char == quote and text[i - 1] != "\\":
                 quote = None
         elif char in "'\"":
             quote = char
-        elif char in "([{":
-            depth += 1
-        elif char in ")]}":
-            depth -= 1
-        elif char == separator and depth == 0:
-            parts.append(text[start:i])
-            start = i + 1
-    parts.append(text[start:])
-    return [part.strip() for part in parts]
+        else:
+            yield i, char, depth
+            depth += (char in "([{") - (char in ")]}")
+
+
+def _split_top_level(text, separator):
+    """text split at `separator` outside brackets and quotes."""
+    cuts = [i for i, char, depth in _top_level(text) if char == separator and depth == 0]
+    bounds = [-1, *cuts, len(text)]
+    return [text[a + 1:b].strip() for a, b in zip(bounds, bounds[1:])]
 
 
 def parse_pybind_signature(line, name):
     """The parameters of one pybind11 signature line, "name(a: object, *, b: object = 1) -> dict"."""
     assert line.startswith(name + "("), f"{line!r} is not a signature of {name}"
-    depth, quote = 0, None
-    for end in range(len(name), len(line)):
-        char = line[end]
-        if quote:
-            quote = None if char == quote else quote
-        elif char in "'\"":
-            quote = char
-        elif char in "([{":
-            depth += 1
-        elif char in ")]}":
-            depth -= 1
-            if depth == 0:
-                break
+    end = next(i for i, char, depth in _top_level(line) if i > len(name) and char == ")" and depth == 1)
     inner = line[len(name) + 1:end]
     params, keyword_only = [], False
     for piece in (p for p in _split_top_level(inner, ",") if p):
