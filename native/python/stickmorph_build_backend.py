@@ -2,7 +2,7 @@
 CMake project.
 
     python3 -m build --wheel --no-isolation [-C build-dir=DIR] [-C jobs=N]
-    pip wheel . --no-build-isolation --no-deps -w dist
+    pip wheel . --no-build-isolation --no-deps -w dist [--config-settings build-dir=DIR]
     python3 native/python/stickmorph_build_backend.py --out dist [--build-dir DIR] [--jobs N]
 
 each write dist/stickmorph-<version>-cp<XY>-cp<XY>-<platform>.whl for the
@@ -17,7 +17,8 @@ only CMake, the compiler and the Python that runs it.
 What it does (build_wheel):
 1. Configures the CMake project in the build folder (default
    build-wheel/cp<XY>-<platform>/; -C build-dir=DIR reuses another one, e.g.
-   the test build, so that nothing is compiled twice) with
+   the test build, so that nothing is compiled twice; or
+   $STICKMORPH_WHEEL_BUILD_DIR, and $STICKMORPH_WHEEL_JOBS for -C jobs) with
    -DPython3_EXECUTABLE=sys.executable, the tests off in a folder of its own,
    and any arguments in $CMAKE_ARGS (e.g. a vcpkg toolchain file), then builds
    the one target stickmorph_python.

@@ -219,3 +219,18 @@ def test_type_checkers_find_the_stubs_in_the_installed_wheel(wheel, tmp_path):
     assert good.returncode == 0, good.stdout + good.stderr
     assert bad.returncode == 1, bad.stdout + bad.stderr
     assert "bad.py:6: error:" in bad.stdout and "missing library stubs" not in bad.stdout, bad.stdout
+
+
+def test_pip_builds_the_same_wheel_from_the_source_tree(wheel, tmp_path):
+    """`pip wheel .` goes through the same backend (pyproject.toml), offline,
+    with the build folder as a config setting."""
+    result = subprocess.run([sys.executable, "-m", "pip", "wheel", str(REPO), "--no-build-isolation", "--no-deps",
+                             "--no-index", "-w", str(tmp_path), f"--config-settings=build-dir={BUILD}"],
+                            capture_output=True, text=True, env=offline_env())
+    assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-3000:]
+    built = tmp_path / wheel.name
+    assert built.is_file(), sorted(p.name for p in tmp_path.iterdir())
+    with zipfile.ZipFile(built) as ours, zipfile.ZipFile(wheel) as reference:
+        assert ours.namelist() == reference.namelist()
+        for name in reference.namelist():
+            assert ours.read(name) == reference.read(name), name
