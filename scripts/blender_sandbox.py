@@ -162,7 +162,10 @@ def _install_extension_file(path, name):
     import bpy
     command = [bpy.app.binary_path, "--command", "extension", "install-file", "-r", USER_REPOSITORY,
                "--enable", path]
-    out = subprocess.run(command, capture_output=True, text=True)
+    try:
+        out = subprocess.run(command, capture_output=True, text=True, timeout=600)
+    except subprocess.TimeoutExpired:
+        raise RuntimeError(f"`{' '.join(command)}` did not finish in 600 s") from None
     if out.returncode != 0:
         raise RuntimeError(f"`{' '.join(command)}` failed (exit {out.returncode}):\n{out.stdout}\n{out.stderr}")
     addon_utils.modules_refresh()
