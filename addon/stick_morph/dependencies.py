@@ -140,6 +140,20 @@ class Dependencies:
         platform = platform if platform != UNKNOWN else "<platform>"
         return f"stick_morph-{version}-{tag}-{platform}.zip"
 
+    def advice(self) -> str:
+        """What to do about a module that does not load. A wheel for another
+        Python: the extension for this one. A module for this very Python
+        that still fails: a system library it needs is missing (libgmp.so.10,
+        a newer libstdc++ or glibc; docs/BLENDER.md) or the file is damaged,
+        so installing "the extension for this Python" again would not help."""
+        if self.build_info["python"] == self.python:
+            return (f"The module is built for this Python {self.python} but does not load here: a system "
+                    "library it needs is missing or too old (libgmp.so.10, the build system's libstdc++ and "
+                    "glibc), or the file is damaged. Install what the error names, or rebuild")
+        if self.wheel != UNKNOWN:
+            return f"Install the extension for Python {self.python} ({self.extension_for_this_python()}), or rebuild"
+        return "Rebuild"
+
     def rebuild_command(self) -> str:
         return BUILD_COMMAND.format(blender=self.blender or "/path/to/blender")
 
@@ -160,7 +174,10 @@ class Dependencies:
                 lines.append(f"Wheel: {self.wheel}")
             lines.append(f"Built for: {self.built_for()}")
             lines.append(f"This Blender: Python {self.python} ({self.python_tag})")
-            if self.wheel != UNKNOWN:
+            if self.build_info["python"] == self.python:
+                lines.append(f"Built for this Python, but it does not load: {self.engine_error}")
+                lines.append("Install the system library it names (libgmp10, a newer libstdc++), or")
+            elif self.wheel != UNKNOWN:
                 lines.append(f"Install the extension for Python {self.python}: {self.extension_for_this_python()}")
             lines.append("Rebuild the add-on for this Blender:")
             lines.append(self.rebuild_command())
@@ -181,11 +198,8 @@ class Dependencies:
             parts.append(f"the add-on holds {found}"
                          + (f" (build_info.json: {module})" if module != UNKNOWN and module not in found else "")
                          + f", built for {self.built_for()}; this Blender has Python {self.python} "
-                         f"({self.python_tag}) ({self.engine_error}). "
-                         + (f"Install the extension for Python {self.python} "
-                            f"({self.extension_for_this_python()}), or rebuild"
-                            if self.wheel != UNKNOWN else "Rebuild")
-                         + f" the add-on for this Blender: {self.rebuild_command()}")
+                         f"({self.python_tag}) ({self.engine_error}). {self.advice()}"
+                         f" the add-on for this Blender: {self.rebuild_command()}")
         return "; ".join(parts)
 
 

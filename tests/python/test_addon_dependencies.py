@@ -129,3 +129,24 @@ def test_an_extension_names_its_wheel_and_the_extension_for_this_python(tmp_path
     for fragment in (f"the add-on holds wheels/{info['wheel']}", "built for Python 3.9 (cpython-39)",
                      f"Install the extension for Python {this} (stick_morph-0.1.0-{tag}-linux-x64.zip)"):
         assert fragment in message, (fragment, message)
+
+
+def test_a_wheel_for_this_python_that_does_not_load_points_at_the_system(tmp_path):
+    """A wheel of the running Python whose module fails (no libgmp, an older
+    glibc, a damaged file): getting "the extension for this Python" again
+    would not help, so the message says what would."""
+    this = f"{sys.version_info[0]}.{sys.version_info[1]}"
+    tag = f"cp{sys.version_info[0]}{sys.version_info[1]}"
+    info = {"python": this, "python_tag": f"cpython-{tag[2:]}", "module": f"stickmorph.cpython-{tag[2:]}-x.so",
+            "built_on": "Debian 13, GCC 14", "wheel": f"stickmorph-0.1.0-{tag}-{tag}-linux_x86_64.whl",
+            "platform": "linux-x64"}
+    package = make_package(tmp_path, build_info=info)
+    (package / "wheels").mkdir()
+    (package / "wheels" / info["wheel"]).write_bytes(b"")
+    status = run_check(package)
+    assert not status["ok"]
+    assert not any(line.startswith("Install the extension") for line in status["lines"]), status["lines"]
+    assert any(line.startswith("Built for this Python, but it does not load: ") for line in status["lines"])
+    message = status["message"]
+    assert f"The module is built for this Python {this} but does not load here" in message, message
+    assert "libgmp.so.10" in message and "Install the extension" not in message, message
